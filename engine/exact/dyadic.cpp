@@ -1,0 +1,62 @@
+#include "exact/dyadic.h"
+
+#include <cmath>
+
+namespace gvm::exact {
+
+Dyadic::Dyadic(double d) {
+  if (d == 0) return;
+  int exp = 0;
+  double frac = std::frexp(d, &exp);  // d = frac * 2^exp, 0.5 <= |frac| < 1
+  // 53 bits of mantissa become an exact integer.
+  auto mant = static_cast<int64_t>(std::ldexp(frac, 53));
+  m_ = mpz_class(static_cast<long>(mant));
+  k_ = static_cast<int64_t>(exp) - 53;
+}
+
+static void align_add(const mpz_class& am, int64_t ak, const mpz_class& bm, int64_t bk,
+                        bool subtract, mpz_class& out_m, int64_t& out_k) {
+  // Shift the operand with the larger exponent left so both share the smaller one.
+  mpz_class shifted;
+  if (ak <= bk) {
+    mpz_mul_2exp(shifted.get_mpz_t(), bm.get_mpz_t(), static_cast<mp_bitcnt_t>(bk - ak));
+    out_m = subtract ? mpz_class(am - shifted) : mpz_class(am + shifted);
+    out_k = ak;
+  } else {
+    mpz_mul_2exp(shifted.get_mpz_t(), am.get_mpz_t(), static_cast<mp_bitcnt_t>(ak - bk));
+    out_m = subtract ? mpz_class(shifted - bm) : mpz_class(shifted + bm);
+    out_k = bk;
+  }
+}
+
+Dyadic operator+(const Dyadic& a, const Dyadic& b) {
+  if (a.is_zero()) return b;
+  if (b.is_zero()) return a;
+  Dyadic r;
+  align_add(a.m_, a.k_, b.m_, b.k_, false, r.m_, r.k_);
+  return r;
+}
+
+Dyadic operator-(const Dyadic& a, const Dyadic& b) {
+  if (b.is_zero()) return a;
+  if (a.is_zero()) return -b;
+  Dyadic r;
+  align_add(a.m_, a.k_, b.m_, b.k_, true, r.m_, r.k_);
+  return r;
+}
+
+Dyadic operator*(const Dyadic& a, const Dyadic& b) {
+  if (a.is_zero() || b.is_zero()) return {};
+  return {a.m_ * b.m_, a.k_ + b.k_};
+}
+
+Dyadic operator-(const Dyadic& a) { return {-a.m_, a.k_}; }
+
+double Dyadic::to_double() const {
+  if (is_zero()) return 0;
+  long exp = 0;
+  double d = mpz_get_d_2exp(&exp, m_.get_mpz_t());
+  return std::ldexp(d, static_cast<int>(exp + k_));
+}
+
+}  // namespace gvm::exact

@@ -1,0 +1,171 @@
+#include "exact/exact_vec.h"
+
+#include <cmath>
+#include <type_traits>
+
+#include "exact/approx.h"
+#include "exact/dyadic.h"
+#include "exact/filtered.h"
+
+namespace gvm::exact {
+namespace {
+
+enum class Op { kLeaf, kAdd, kSub, kNeg, kCross };
+
+template <class T>
+using V3 = std::array<T, 3>;
+
+template <class T>
+V3<T> cross3(const V3<T>& a, const V3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+}  // namespace
+
+struct ExactVec::Node {
+  Op op = Op::kLeaf;
+  Point3 leaf;
+  std::shared_ptr<const Node> a, b;
+  V3<Approx> approx;  // filtered value, computed once at construction
+
+  template <class T>
+  V3<T> eval() const;
+};
+
+template <class T>
+V3<T> ExactVec::Node::eval() const {
+  if constexpr (std::is_same_v<T, Approx>) return approx;
+  switch (op) {
+    case Op::kLeaf:
+      return {T(leaf.x), T(leaf.y), T(leaf.z)};
+    case Op::kAdd: {
+      auto x = a->eval<T>(), y = b->eval<T>();
+      return {x[0] + y[0], x[1] + y[1], x[2] + y[2]};
+    }
+    case Op::kSub: {
+      auto x = a->eval<T>(), y = b->eval<T>();
+      return {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+    }
+    case Op::kNeg: {
+      auto x = a->eval<T>();
+      return {-x[0], -x[1], -x[2]};
+    }
+    case Op::kCross:
+      return cross3(a->eval<T>(), b->eval<T>());
+  }
+  return {};
+}
+
+namespace {
+
+const ExactVec::Node& zero_node() {
+  static const ExactVec::Node kZero{};
+  return kZero;
+}
+
+const ExactVec::Node& node_of(const ExactVec& v) { return v.node() ? *v.node() : zero_node(); }
+
+template <class T>
+V3<T> eval(const ExactVec& v) {
+  return node_of(v).eval<T>();
+}
+
+}  // namespace
+
+ExactVec ExactVec::from_point(const Point3& p) {
+  auto n = std::make_shared<Node>();
+  n->op = Op::kLeaf;
+  n->leaf = p;
+  n->approx = {Approx(p.x), Approx(p.y), Approx(p.z)};
+  return ExactVec(std::move(n));
+}
+
+ExactVec operator+(const ExactVec& a, const ExactVec& b) {
+  auto n = std::make_shared<ExactVec::Node>();
+  n->op = Op::kAdd;
+  n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
+  n->b = b.node_ ? b.node_ : ExactVec::from_point({}).node_;
+  for (int i = 0; i < 3; ++i) n->approx[i] = n->a->approx[i] + n->b->approx[i];
+  return ExactVec(std::move(n));
+}
+
+ExactVec operator-(const ExactVec& a, const ExactVec& b) {
+  auto n = std::make_shared<ExactVec::Node>();
+  n->op = Op::kSub;
+  n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
+  n->b = b.node_ ? b.node_ : ExactVec::from_point({}).node_;
+  for (int i = 0; i < 3; ++i) n->approx[i] = n->a->approx[i] - n->b->approx[i];
+  return ExactVec(std::move(n));
+}
+
+ExactVec operator-(const ExactVec& a) {
+  auto n = std::make_shared<ExactVec::Node>();
+  n->op = Op::kNeg;
+  n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
+  for (int i = 0; i < 3; ++i) n->approx[i] = -n->a->approx[i];
+  return ExactVec(std::move(n));
+}
+
+ExactVec cross(const ExactVec& a, const ExactVec& b) {
+  auto n = std::make_shared<ExactVec::Node>();
+  n->op = Op::kCross;
+  n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
+  n->b = b.node_ ? b.node_ : ExactVec::from_point({}).node_;
+  n->approx = cross3(n->a->approx, n->b->approx);
+  return ExactVec(std::move(n));
+}
+
+std::array<double, 3> ExactVec::approx() const {
+  const auto& a = node_of(*this).approx;
+  return {a[0].value(), a[1].value(), a[2].value()};
+}
+
+std::array<double, 3> ExactVec::unit() const {
+  // Exact scaling by a power of two keeps the approximation meaningful for vectors whose
+  // components under- or overflow double range.
+  auto e = eval<Dyadic>(*this);
+  std::array<double, 3> d = {e[0].to_double(), e[1].to_double(), e[2].to_double()};
+  double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {d[0] / len, d[1] / len, d[2] / len};
+}
+
+ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c) {
+  auto pa = ExactVec::from_point(a);
+  return cross(ExactVec::from_point(b) - pa, ExactVec::from_point(c) - pa);
+}
+
+Sign sign_dot(const ExactVec& a, const ExactVec& b) {
+  return filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    auto x = eval<T>(a), y = eval<T>(b);
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+  });
+}
+
+Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
+  return filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    auto x = eval<T>(a), y = eval<T>(b), z = eval<T>(c);
+    auto w = cross3(y, z);
+    return x[0] * w[0] + x[1] * w[1] + x[2] * w[2];
+  });
+}
+
+bool is_zero(const ExactVec& a) {
+  for (int i = 0; i < 3; ++i) {
+    Sign s = filtered_sign([&](auto tag) {
+      using T = decltype(tag);
+      return eval<T>(a)[i];
+    });
+    if (s != Sign::kZero) return false;
+  }
+  return true;
+}
+
+bool parallel(const ExactVec& a, const ExactVec& b) { return is_zero(cross(a, b)); }
+
+bool same_direction(const ExactVec& a, const ExactVec& b) {
+  return parallel(a, b) && sign_dot(a, b) == Sign::kPositive;
+}
+
+}  // namespace gvm::exact

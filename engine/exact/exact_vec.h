@@ -1,0 +1,54 @@
+// Exact vectors for spherical geometry. A direction on the sphere is a non-zero vector of
+// R^3 whose coordinates are polynomials in the input doubles: a face normal is a cross
+// product of two vertex differences, an arc intersection is a cross product of two such
+// normals. An ExactVec records how it was constructed (an immutable expression DAG) and
+// caches a filtered floating-point approximation; predicates use the approximation and
+// re-evaluate the DAG exactly only when the filter cannot decide. Never normalized: a
+// direction is any positive multiple, so all constructions stay exact.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "gvm/geometry.h"
+
+namespace gvm::exact {
+
+class Approx;
+
+class ExactVec {
+ public:
+  ExactVec() = default;  // the zero vector
+  static ExactVec from_point(const Point3& p);
+
+  friend ExactVec operator+(const ExactVec& a, const ExactVec& b);
+  friend ExactVec operator-(const ExactVec& a, const ExactVec& b);
+  friend ExactVec operator-(const ExactVec& a);
+  friend ExactVec cross(const ExactVec& a, const ExactVec& b);
+
+  // Floating-point approximation (value only), e.g. for output and bounding boxes.
+  std::array<double, 3> approx() const;
+  // The same, scaled to unit length (the vector must be non-zero).
+  std::array<double, 3> unit() const;
+
+  struct Node;
+  const Node* node() const { return node_.get(); }
+
+ private:
+  explicit ExactVec(std::shared_ptr<const Node> n) : node_(std::move(n)) {}
+  std::shared_ptr<const Node> node_;
+};
+
+// Convenience: the normal (b - a) x (c - a) of triangle a, b, c.
+ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c);
+
+// Exact predicates on exact vectors.
+Sign sign_dot(const ExactVec& a, const ExactVec& b);
+Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c);
+bool is_zero(const ExactVec& a);
+// a x b == 0: parallel, antiparallel, or one of them zero.
+bool parallel(const ExactVec& a, const ExactVec& b);
+// Same direction on the sphere: parallel and a . b > 0.
+bool same_direction(const ExactVec& a, const ExactVec& b);
+
+}  // namespace gvm::exact

@@ -1,0 +1,40 @@
+// Every geometric decision of the engine is one of these predicates. Each is exact for
+// double input: a floating-point filter with a certified error bound decides almost all
+// calls, and an exact dyadic (GMP) evaluation decides the rest. A zero result is reported
+// as zero: degenerate input (coplanar faces, parallel walls) is answered, never perturbed.
+// Nothing outside the exact module compares a floating-point value with an epsilon.
+#pragma once
+
+#include "gvm/geometry.h"
+
+namespace gvm::exact {
+
+// Sign of det(b-a, c-a, d-a): positive when d lies on the side of plane (a, b, c) that the
+// normal (b-a) x (c-a) points to.
+Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+// Sign of det(a1-a0, b1-b0, c1-c0) for three difference vectors of input points. This is
+// the predicate of the Minkowski-sum faces: (a1-a0) x (b1-b0) is a face normal or an
+// edge-edge normal, c1-c0 a vertex difference or an edge direction.
+Sign det_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1,
+              const Point3& c0, const Point3& c1);
+
+// Sign of (a1-a0) . (b1-b0).
+Sign dot_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1);
+
+// Orientation of a, b, c in the coordinate plane that drops axis `drop` (0, 1 or 2):
+// sign of the 2D determinant of (b-a, c-a) in the remaining axes in cyclic order
+// (drop 0 -> (y, z), drop 1 -> (z, x), drop 2 -> (x, y)).
+Sign orient2d(const Point3& a, const Point3& b, const Point3& c, int drop);
+
+// True when (b-a) x (c-a) is exactly zero: a, b, c collinear (or coincident).
+bool collinear(const Point3& a, const Point3& b, const Point3& c);
+
+// Sign of the component `axis` of (b-a) x (c-a); the dominant non-zero component gives a
+// projection plane in which a triangle keeps its orientation.
+Sign cross_component(const Point3& a, const Point3& b, const Point3& c, int axis);
+
+// Sign of (a-b) compared coordinate-wise in order x, y, z (lexicographic comparison).
+int compare_lex(const Point3& a, const Point3& b);
+
+}  // namespace gvm::exact
