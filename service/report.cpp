@@ -1,0 +1,73 @@
+#include "report.h"
+
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace gvm {
+namespace {
+
+std::string map_line(const v1::SphericalImage& map) {
+  std::ostringstream s;
+  s << map.description();
+  if (map.dimension() == 2) s << " [" << std::fixed << std::setprecision(4) << map.area() << " sr]";
+  return s.str();
+}
+
+std::string gvm_line(const v1::SphericalImage& gvm, const v1::SurfaceInfo& info) {
+  switch (info.gvm_status()) {
+    case v1::GVM_STATUS_EXACT_NO_POTENTIAL_OCCLUDERS:
+      return "GVM = LVM(S + N_S) exactly (O_S is empty)";
+    case v1::GVM_STATUS_EMPTY_VOID:
+      return "GVM empty (faces of an internal void)";
+    case v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED:
+      return "GVM not computed: global occlusion by O_S is not in this version; "
+             "LVM(S + N_S) is an outer bound";
+    default:
+      return gvm.description();
+  }
+}
+
+template <class Msg>
+void print_surface(const Msg& m, const std::string& label, std::ostream& out) {
+  out << "  " << std::left << std::setw(18) << label << " faces " << std::setw(6)
+      << m.faces_size() << " |N_S| " << std::setw(5) << m.info().neighbor_occluders()
+      << " |O_S| " << std::setw(6) << m.info().potential_occluders() << "\n"
+      << "      LVM(S + N_S): " << map_line(m.lvm()) << "\n"
+      << "      " << gvm_line(m.gvm(), m.info()) << "\n";
+}
+
+}  // namespace
+
+void print_report(const v1::Analysis& a, std::ostream& out) {
+  const v1::PartSummary& p = a.part();
+  out << "Part " << p.source() << "\n"
+      << "  " << p.input_faces() << " faces (" << p.triangles() << " triangles), "
+      << p.input_vertices() << " vertices, " << p.shells() << " shell(s)";
+  if (p.void_shells() > 0) out << " of which " << p.void_shells() << " internal void(s)";
+  out << ", " << p.hull_faces() << " faces on the convex hull\n";
+  const auto& lo = p.bounding_box().min();
+  const auto& hi = p.bounding_box().max();
+  out << "  bounding box (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") - (" << hi.x()
+      << ", " << hi.y() << ", " << hi.z() << ")\n"
+      << "  validation: " << p.validation() << "\n"
+      << "Directions are those along which rays leave the surface (a tool approaches along -u).\n\n";
+
+  out << "Concave regions: " << a.regions_size() << "\n";
+  for (const v1::Region& r : a.regions()) {
+    std::string label = "R" + std::to_string(r.id()) + (r.is_void() ? " (void)" : "");
+    print_surface(r, label, out);
+  }
+  out << "\nFeatures: " << a.features_size() << "\n";
+  for (const v1::Feature& f : a.features()) {
+    std::string label = f.name() + (f.on_hull() ? " (hull)" : " (R" + std::to_string(f.region()) + ")");
+    print_surface(f, label, out);
+  }
+  const v1::Timing& t = a.timing();
+  out << "\nTiming: read " << std::fixed << std::setprecision(3) << t.read_seconds()
+      << " s, validate " << t.validate_seconds() << " s, regions/features/occluders "
+      << t.part_seconds() << " s, visibility maps " << t.visibility_seconds() << " s on "
+      << t.threads() << " thread(s), total " << t.total_seconds() << " s\n";
+}
+
+}  // namespace gvm

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs everything the project needs to build and test, from Debian 12 packages.
+set -euo pipefail
+packages=(
+  cmake ninja-build g++ pkg-config
+  libtbb-dev libopenmesh-dev libspdlog-dev
+  libprotobuf-dev protobuf-compiler
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libgmp-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
