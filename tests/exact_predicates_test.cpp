@@ -1,0 +1,157 @@
+// Exactness of the predicates on inputs built to be degenerate. The reference is GMP's
+// rational type, an implementation independent of the engine's dyadic arithmetic.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "exact/exact_vec.h"
+#include "exact/predicates.h"
+
+namespace gvm::exact {
+namespace {
+
+mpq_class q(double d) { return mpq_class(d); }
+
+Sign sign_of(const mpq_class& v) { return static_cast<Sign>(sgn(v)); }
+
+Sign reference_det_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1,
+                        const Point3& c0, const Point3& c1) {
+  mpq_class a[3], b[3], c[3];
+  for (int i = 0; i < 3; ++i) {
+    a[i] = q(a1[i]) - q(a0[i]);
+    b[i] = q(b1[i]) - q(b0[i]);
+    c[i] = q(c1[i]) - q(c0[i]);
+  }
+  mpq_class det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                  a[2] * (b[0] * c[1] - b[1] * c[0]);
+  return sign_of(det);
+}
+
+Sign reference_orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  return reference_det_diff(a, b, a, c, a, d);
+}
+
+// The 3-4-5 rotation about z, scaled by 5 so that integer points stay integer: the
+// rotated copy of an axis-aligned configuration has no axis-aligned special cases.
+Point3 rot345z(const Point3& p) { return {3 * p.x + 4 * p.y, -4 * p.x + 3 * p.y, 5 * p.z}; }
+Point3 rot345x(const Point3& p) { return {5 * p.x, 3 * p.y + 4 * p.z, -4 * p.y + 3 * p.z}; }
+Point3 rotate(const Point3& p) { return rot345x(rot345z(p)); }
+
+TEST(ExactPredicates, CoplanarPointsWithMixedMagnitudesGiveZero) {
+  // All on the plane x + y + z = 0, coordinates from 1e-12 to 1e12 in one configuration:
+  // the rounded differences make a naive determinant non-zero.
+  Point3 a{1e12, -1e12, 0}, b{1e-12, 0, -1e-12}, c{0, 0x1p-40, -0x1p-40},
+      d{0x1p40, 1, -(0x1p40 + 1)};
+  EXPECT_EQ(orient3d(a, b, c, d), Sign::kZero);
+  EXPECT_EQ(reference_orient3d(a, b, c, d), Sign::kZero);
+  // One ulp off the plane is decided, with the sign of the exact value.
+  Point3 above{d.x, d.y, std::nextafter(d.z, 0.0)};
+  Point3 below{d.x, d.y, std::nextafter(d.z, -1e300)};
+  EXPECT_EQ(orient3d(a, b, c, above), reference_orient3d(a, b, c, above));
+  EXPECT_EQ(orient3d(a, b, c, below), reference_orient3d(a, b, c, below));
+  EXPECT_NE(orient3d(a, b, c, above), Sign::kZero);
+  EXPECT_EQ(orient3d(a, b, c, above), -orient3d(a, b, c, below));
+}
+
+TEST(ExactPredicates, ExactlyParallelWallsUnderRationalRotation) {
+  // Two opposite walls of a slot, x = 0 and x = 7, each split into two triangles; the
+  // normals of the walls are exactly antiparallel and every wall point lies on its plane.
+  const Point3 w0[] = {{0, 0, 0}, {0, 10, 0}, {0, 10, 5}, {0, 0, 5}};
+  const Point3 w1[] = {{7, 0, 0}, {7, 0, 5}, {7, 10, 5}, {7, 10, 0}};
+  for (bool rotated : {false, true}) {
+    auto r = [&](const Point3& p) { return rotated ? rotate(p) : p; };
+    // Coplanar triangles of one wall: every vertex on the other triangle's plane.
+    EXPECT_EQ(orient3d(r(w0[0]), r(w0[1]), r(w0[2]), r(w0[3])), Sign::kZero);
+    EXPECT_EQ(orient3d(r(w1[0]), r(w1[1]), r(w1[2]), r(w1[3])), Sign::kZero);
+    // Parallel planes: the normal of wall 0 is perpendicular to every edge of wall 1.
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(det_diff(r(w0[0]), r(w0[1]), r(w0[0]), r(w0[2]), r(w1[i]), r(w1[(i + 1) % 4])),
+                Sign::kZero);
+    }
+    ExactVec n0 = triangle_normal(r(w0[0]), r(w0[1]), r(w0[2]));
+    ExactVec n1 = triangle_normal(r(w1[0]), r(w1[1]), r(w1[2]));
+    EXPECT_TRUE(parallel(n0, n1));
+    EXPECT_FALSE(same_direction(n0, n1));
+    EXPECT_TRUE(same_direction(n0, -n1));
+    // Wall 1 is on the positive side of wall 0 (normal +x), wall 0 on the positive side
+    // of wall 1 (normal -x): they face each other.
+    EXPECT_EQ(orient3d(r(w0[0]), r(w0[1]), r(w0[2]), r(w1[0])), Sign::kPositive);
+    EXPECT_EQ(orient3d(r(w1[0]), r(w1[1]), r(w1[2]), r(w0[0])), Sign::kPositive);
+  }
+}
+
+TEST(ExactPredicates, PointsExactlyOnPlanesAndLines) {
+  for (bool rotated : {false, true}) {
+    auto r = [&](const Point3& p) { return rotated ? rotate(p) : p; };
+    Point3 a = r({1, 2, 3}), b = r({4, 6, 3}), c = r({-2, 5, 3});
+    EXPECT_EQ(orient3d(a, b, c, r({100, -300, 3})), Sign::kZero);
+    EXPECT_TRUE(collinear(a, b, r({7, 10, 3})));   // a + 2 (b - a)
+    EXPECT_FALSE(collinear(a, b, r({7, 10, 4})));
+    // (b - a) = (3, 4, 0) is exactly perpendicular to (-4, 3, 0), rotated or not.
+    EXPECT_EQ(dot_diff(a, b, a, r({-3, 5, 3})), Sign::kZero);
+    EXPECT_EQ(dot_diff(a, b, a, c), Sign::kPositive);
+  }
+}
+
+TEST(ExactPredicates, Orient2dInEveryProjection) {
+  Point3 a{0, 0, 0}, b{1, 1, 1}, c{2, 2, 2}, d{1, 2, 3};
+  for (int drop = 0; drop < 3; ++drop) {
+    EXPECT_EQ(orient2d(a, b, c, drop), Sign::kZero);
+    EXPECT_NE(orient2d(a, b, d, drop), Sign::kZero);
+  }
+  // Cyclic axis order: dropping z gives the usual (x, y) orientation.
+  EXPECT_EQ(orient2d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2), Sign::kPositive);
+  EXPECT_EQ(orient2d({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0), Sign::kPositive);
+  EXPECT_EQ(orient2d({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1), Sign::kPositive);
+}
+
+// Random configurations made degenerate on purpose (coplanar by construction, coordinates
+// spread over 2^-60 .. 2^60) agree with the rational reference, seed printed on failure.
+TEST(ExactPredicates, RandomDegenerateConfigurationsMatchRationalReference) {
+  const unsigned seed = 20261122;
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> small(-8, 8), expo(-60, 60);
+  auto scaled = [&] { return std::ldexp(small(rng), expo(rng)); };
+  int zeros = 0;
+  for (int iter = 0; iter < 20000; ++iter) {
+    Point3 a{scaled(), scaled(), scaled()};
+    Point3 u{static_cast<double>(small(rng)), static_cast<double>(small(rng)),
+             static_cast<double>(small(rng))};
+    Point3 v{static_cast<double>(small(rng)), static_cast<double>(small(rng)),
+             static_cast<double>(small(rng))};
+    // b, c, d = a + integer combinations of u, v: coplanar whenever no rounding happens,
+    // and nearly coplanar otherwise.
+    auto comb = [&](int s, int t) {
+      return Point3{a.x + s * u.x + t * v.x, a.y + s * u.y + t * v.y, a.z + s * u.z + t * v.z};
+    };
+    Point3 b = comb(1, 0), c = comb(0, 1), d = comb(small(rng), small(rng));
+    Sign got = orient3d(a, b, c, d);
+    ASSERT_EQ(got, reference_orient3d(a, b, c, d)) << "iteration " << iter;
+    zeros += got == Sign::kZero;
+    Point3 e{scaled(), scaled(), scaled()};
+    ASSERT_EQ(det_diff(a, b, c, d, e, a), reference_det_diff(a, b, c, d, e, a));
+  }
+  EXPECT_GT(zeros, 1000);  // the construction really is degenerate
+}
+
+TEST(ExactVec, CrossProductDirectionsAreExact) {
+  // Edge direction of two rotated walls meeting at a concave edge: n0 x n1 is exactly the
+  // rotated z axis.
+  Point3 o = rotate({0, 0, 0});
+  ExactVec n_floor = triangle_normal(o, rotate({1, 0, 0}), rotate({0, 1, 0}));
+  ExactVec n_wall = triangle_normal(o, rotate({0, 1, 0}), rotate({0, 0, 1}));
+  ExactVec edge = cross(n_floor, n_wall);
+  ExactVec y_axis = ExactVec::from_point(rotate({0, 1, 0})) - ExactVec::from_point(o);
+  EXPECT_TRUE(parallel(edge, y_axis));
+  EXPECT_EQ(sign_det(n_floor, n_wall, edge), Sign::kPositive);
+  EXPECT_EQ(sign_dot(edge, n_floor), Sign::kZero);
+  EXPECT_TRUE(is_zero(cross(edge, edge)));
+  auto u = edge.unit();
+  EXPECT_NEAR(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], 1.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace gvm::exact
