@@ -1,0 +1,192 @@
+#include "visibility/effective_minkowski_envelope.h"
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+
+#include "exact/predicates.h"
+#include "visibility/surface_topology.h"
+
+namespace gvm {
+namespace {
+
+// Signs seen in a critical set.
+struct CriticalSet {
+  bool positive = false, negative = false;
+  void add(Sign s) {
+    positive |= s == Sign::kPositive;
+    negative |= s == Sign::kNegative;
+  }
+  bool mixed() const { return positive && negative; }
+};
+
+// Orientation of a kept tentative face with plane normal n (a chosen orientation of the
+// tentative normal): +1 when its outward normal is n, -1 when it is -n, 0 when the face
+// is tangent to the origin or front-facing (not in the envelope). `sigma` is the sign of
+// n . x for a point x of the face (the side of the origin is -sigma).
+int envelope_orientation(const CriticalSet& c, Sign sigma) {
+  if (sigma == Sign::kZero) return 0;  // plane through the origin: projects to an arc
+  int s = static_cast<int>(sigma);
+  // Lemma 2: volume on the side where the critical values point, outward the other way.
+  // {0,0}: taken as back-facing (the paper's convention for non-general position).
+  int outward = c.positive ? -1 : (c.negative ? 1 : s);
+  // Back-facing to the origin c: the origin lies behind the face, i.e. x . n_out > 0.
+  return outward == s ? outward : 0;
+}
+
+// One oriented edge of an envelope face, keyed by its parents.
+struct EdgeRef {
+  // kind 0: V_O + (-E_S) = (q - a) -> (q - b), keyed (q, a, b) with a < b;
+  // kind 1: E_O + (-V_S) = (c - p) -> (d - p), keyed (c, d, p) with c < d.
+  uint32_t kind, x, y, z;
+  int32_t sign;
+  uint32_t face;
+  auto key() const { return std::tie(kind, x, y, z); }
+};
+
+class Builder {
+ public:
+  explicit Builder(bool keep_faces) : keep_faces_(keep_faces) {}
+
+  // Adds a kept, back-facing face with vertices (q_i, p_i) counter-clockwise around its
+  // outward normal.
+  void add_face(std::initializer_list<std::pair<uint32_t, uint32_t>> cycle) {
+    const uint32_t face = faces_++;
+    const auto* v = cycle.begin();
+    const size_t n = cycle.size();
+    for (size_t i = 0; i < n; ++i) {
+      auto [q0, p0] = v[i];
+      auto [q1, p1] = v[(i + 1) % n];
+      if (q0 == q1) {
+        edges_.push_back({0, q0, std::min(p0, p1), std::max(p0, p1), p0 < p1 ? 1 : -1, face});
+      } else {
+        edges_.push_back({1, std::min(q0, q1), std::max(q0, q1), p0, q0 < q1 ? 1 : -1, face});
+      }
+    }
+    if (keep_faces_) out_.faces.push_back({std::vector(cycle.begin(), cycle.end())});
+  }
+
+  EffectiveMinkowskiEnvelope finish(EnvelopeStatistics stats) {
+    std::sort(edges_.begin(), edges_.end(),
+              [](const EdgeRef& a, const EdgeRef& b) { return a.key() < b.key(); });
+    std::vector<uint32_t> parent(faces_);
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto find = [&](uint32_t f) {
+      while (parent[f] != f) f = parent[f] = parent[parent[f]];
+      return f;
+    };
+    for (size_t i = 0; i < edges_.size();) {
+      size_t j = i;
+      int32_t net = 0;
+      for (; j < edges_.size() && edges_[j].key() == edges_[i].key(); ++j) {
+        net += edges_[j].sign;
+        parent[find(edges_[j].face)] = find(edges_[i].face);
+      }
+      if (net != 0) out_.border.push_back(border_edge(edges_[i], net));
+      i = j;
+    }
+    for (uint32_t f = 0; f < faces_; ++f) stats.patches += find(f) == f;
+    stats.envelope_faces = faces_;
+    stats.border_edges = out_.border.size();
+    out_.statistics = stats;
+    return std::move(out_);
+  }
+
+ private:
+  static EnvelopeBorderEdge border_edge(const EdgeRef& e, int32_t net) {
+    EnvelopeBorderEdge b = e.kind == 0 ? EnvelopeBorderEdge{e.x, e.y, e.x, e.z, net}
+                                       : EnvelopeBorderEdge{e.x, e.z, e.y, e.z, net};
+    if (net < 0) {  // walk it the other way so the multiplicity is positive
+      std::swap(b.q0, b.q1);
+      std::swap(b.p0, b.p1);
+      b.multiplicity = -net;
+    }
+    return b;
+  }
+
+  bool keep_faces_;
+  uint32_t faces_ = 0;
+  std::vector<EdgeRef> edges_;
+  EffectiveMinkowskiEnvelope out_;
+};
+
+}  // namespace
+
+EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh& mesh,
+                                                                std::span<const uint32_t> s,
+                                                                std::span<const uint32_t> o,
+                                                                bool keep_faces) {
+  const SurfaceTopology ts(mesh, s), to(mesh, o);
+  const auto& P = mesh.points;
+  EnvelopeStatistics stats;
+  Builder builder(keep_faces);
+
+  // VF: V_O + (-F_S). Normal n = (b - a) x (c - a) of F_S; the face (q-a, q-b, q-c) has
+  // normal n; volume directions are O's edges at q.
+  for (uint32_t fs : s) {
+    const Triangle& f = mesh.triangles[fs];
+    const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
+    for (size_t i = 0; i < to.vertices().size(); ++i) {
+      const uint32_t q = to.vertices()[i];
+      ++stats.tentative_faces;
+      CriticalSet crit;
+      for (uint32_t w : to.neighbors(i)) {
+        crit.add(exact::det_diff(a, b, a, c, P[q], P[w]));
+        if (crit.mixed()) break;
+      }
+      if (crit.mixed()) continue;
+      ++stats.kept_faces;
+      int orient = envelope_orientation(crit, exact::orient3d(a, b, c, P[q]));
+      if (orient > 0) builder.add_face({{q, f[0]}, {q, f[1]}, {q, f[2]}});
+      if (orient < 0) builder.add_face({{q, f[2]}, {q, f[1]}, {q, f[0]}});
+    }
+  }
+
+  // FV: F_O + (-V_S). Normal n of F_O; volume directions are -(w - p) for S's edges at p.
+  for (uint32_t fo : o) {
+    const Triangle& f = mesh.triangles[fo];
+    const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
+    for (size_t i = 0; i < ts.vertices().size(); ++i) {
+      const uint32_t p = ts.vertices()[i];
+      ++stats.tentative_faces;
+      CriticalSet crit;
+      for (uint32_t w : ts.neighbors(i)) {
+        crit.add(exact::det_diff(a, b, a, c, P[w], P[p]));
+        if (crit.mixed()) break;
+      }
+      if (crit.mixed()) continue;
+      ++stats.kept_faces;
+      int orient = envelope_orientation(crit, exact::det_diff(a, b, a, c, P[p], a));
+      if (orient > 0) builder.add_face({{f[0], p}, {f[1], p}, {f[2], p}});
+      if (orient < 0) builder.add_face({{f[2], p}, {f[1], p}, {f[0], p}});
+    }
+  }
+
+  // EE: E_O + (-E_S), a parallelogram with normal n = (q1 - q0) x (p1 - p0); volume
+  // directions are the inface directions of E_O in O and of -E_S in -S.
+  for (const auto& eo : to.edges()) {
+    const Point3 &q0 = P[eo.a], &q1 = P[eo.b];
+    for (const auto& es : ts.edges()) {
+      const Point3 &p0 = P[es.a], &p1 = P[es.b];
+      ++stats.tentative_faces;
+      CriticalSet crit;
+      for (int k = 0; k < eo.face_count && !crit.mixed(); ++k) {
+        crit.add(exact::det_diff(q0, q1, p0, p1, q0, P[eo.opposite[k]]));
+      }
+      for (int k = 0; k < es.face_count && !crit.mixed(); ++k) {
+        crit.add(exact::det_diff(q0, q1, p0, p1, P[es.opposite[k]], p0));
+      }
+      if (crit.mixed()) continue;
+      // Parallel edges give n = 0: every value, sigma included, is zero and the
+      // "parallelogram" is a segment, dropped as tangent below.
+      ++stats.kept_faces;
+      int orient = envelope_orientation(crit, exact::det_diff(q0, q1, p0, p1, p0, q0));
+      // (q0-p0, q1-p0, q1-p1, q0-p1) runs counter-clockwise around -n.
+      if (orient < 0) builder.add_face({{eo.a, es.a}, {eo.b, es.a}, {eo.b, es.b}, {eo.a, es.b}});
+      if (orient > 0) builder.add_face({{eo.a, es.b}, {eo.b, es.b}, {eo.b, es.a}, {eo.a, es.a}});
+    }
+  }
+  return builder.finish(stats);
+}
+
+}  // namespace gvm
