@@ -34,7 +34,7 @@ class RawImporter : public OpenMesh::IO::BaseImporter {
     return OpenMesh::VertexHandle(int(points.size() - 1));
   }
   OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle, OpenMesh::VertexHandle) override {
-    return {};
+    return OpenMesh::HalfedgeHandle();
   }
   OpenMesh::FaceHandle add_face(const VHandles& idx) override {
     std::vector<uint32_t> f;
@@ -46,7 +46,7 @@ class RawImporter : public OpenMesh::IO::BaseImporter {
     faces.push_back(std::move(f));
     return OpenMesh::FaceHandle(int(faces.size() - 1));
   }
-  OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override { return {}; }
+  OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override { return OpenMesh::FaceHandle(); }
 
   void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
                           const std::vector<OpenMesh::Vec2f>&) override {}

@@ -1,0 +1,400 @@
+// Validation of a raw mesh and construction of the SolidMesh. Every geometric decision is
+// an exact predicate from engine/exact; no epsilon anywhere.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "exact/approx.h"
+#include "exact/dyadic.h"
+#include "exact/predicates.h"
+#include "gvm/mesh.h"
+#include "mesh/tri_intersect.h"
+
+namespace gvm {
+namespace {
+
+using exact::collinear;
+using exact::orient2d;
+using exact::orient3d;
+
+std::string S(uint64_t v) { return std::to_string(v); }
+std::string edge_name(uint32_t a, uint32_t b) { return "(" + S(a) + ", " + S(b) + ")"; }
+
+// The axis to drop so that the plane of a, b, c projects without collapsing, and the sign
+// the triangle a, b, c has in that projection.
+int drop_axis(const Point3& a, const Point3& b, const Point3& c) {
+  for (int ax = 2; ax >= 0; --ax)
+    if (orient2d(a, b, c, ax) != Sign::kZero) return ax;
+  return -1;
+}
+
+// Proper intersection of closed 2D segments (touching included), in projection `drop`.
+bool seg_seg_2d(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop) {
+  Sign o1 = orient2d(a, b, c, drop), o2 = orient2d(a, b, d, drop);
+  Sign o3 = orient2d(c, d, a, drop), o4 = orient2d(c, d, b, drop);
+  if (o1 == Sign::kZero && o2 == Sign::kZero) {  // collinear: overlap of projections
+    int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    for (int ax : {i, j}) {
+      double lo1 = std::min(a[ax], b[ax]), hi1 = std::max(a[ax], b[ax]);
+      double lo2 = std::min(c[ax], d[ax]), hi2 = std::max(c[ax], d[ax]);
+      if (hi1 < lo2 || hi2 < lo1) return false;
+    }
+    return true;
+  }
+  return o1 * o2 != Sign::kPositive && o3 * o4 != Sign::kPositive;
+}
+
+// Splits a planar simple polygon (vertex indices `f`) into triangles by ear clipping in
+// projection `drop`, where the polygon has orientation `s`. Returns false if the polygon is
+// not simple (self-overlapping) or cannot be clipped into non-degenerate triangles.
+bool triangulate_polygon(const std::vector<Point3>& P, const std::vector<uint32_t>& f,
+                         int drop, std::vector<Triangle>& out) {
+  const size_t n = f.size();
+  // Orientation in the projection: exact signed area (shoelace sum).
+  auto area_sign = [&]() {
+    auto expr = [&](auto tag) {
+      using T = decltype(tag);
+      int i = (drop + 1) % 3, j = (drop + 2) % 3;
+      T sum(0.0);
+      for (size_t k = 0; k < n; ++k) {
+        const Point3& p = P[f[k]];
+        const Point3& q = P[f[(k + 1) % n]];
+        sum = sum + T(p[i]) * T(q[j]) - T(p[j]) * T(q[i]);
+      }
+      return sum;
+    };
+    if (auto s = expr(exact::Approx{}).sign()) return *s;
+    return expr(exact::Dyadic{}).sign();
+  };
+  Sign s = area_sign();
+  if (s == Sign::kZero) return false;
+  // Simplicity: no two non-adjacent edges touch, adjacent edges meet only at their vertex.
+  for (size_t a = 0; a < n; ++a) {
+    const Point3 &a0 = P[f[a]], &a1 = P[f[(a + 1) % n]];
+    for (size_t b = a + 1; b < n; ++b) {
+      const Point3 &b0 = P[f[b]], &b1 = P[f[(b + 1) % n]];
+      bool adjacent = (b == a + 1) || (a == 0 && b == n - 1);
+      if (!adjacent) {
+        if (seg_seg_2d(a0, a1, b0, b1, drop)) return false;
+      } else {
+        // shared vertex v; fold-back when the other ends are collinear on the same ray
+        const Point3& v = (b == a + 1) ? a1 : a0;
+        const Point3& x = (b == a + 1) ? a0 : a1;
+        const Point3& y = (b == a + 1) ? b1 : b0;
+        if (orient2d(v, x, y, drop) == Sign::kZero &&
+            exact::dot_diff(v, x, v, y) == Sign::kPositive)
+          return false;
+      }
+    }
+  }
+  // Strictly convex and turning once: fan from the first vertex.
+  bool convex = true;
+  for (size_t k = 0; k < n && convex; ++k)
+    if (orient2d(P[f[k]], P[f[(k + 1) % n]], P[f[(k + 2) % n]], drop) != s) convex = false;
+  if (convex) {
+    for (size_t k = 1; k + 1 < n; ++k) out.push_back({f[0], f[k], f[k + 1]});
+    return true;
+  }
+  std::vector<uint32_t> poly(f);
+  while (poly.size() > 3) {
+    const size_t m = poly.size();
+    bool clipped = false;
+    for (size_t k = 0; k < m && !clipped; ++k) {
+      uint32_t ia = poly[(k + m - 1) % m], ib = poly[k], ic = poly[(k + 1) % m];
+      const Point3 &a = P[ia], &b = P[ib], &c = P[ic];
+      if (orient2d(a, b, c, drop) != s) continue;
+      bool empty = true;
+      for (size_t r = 0; r < m && empty; ++r) {
+        uint32_t ir = poly[r];
+        if (ir == ia || ir == ib || ir == ic) continue;
+        const Point3& q = P[ir];
+        if (orient2d(a, b, q, drop) != -s && orient2d(b, c, q, drop) != -s &&
+            orient2d(c, a, q, drop) != -s)
+          empty = false;
+      }
+      if (!empty) continue;
+      out.push_back({ia, ib, ic});
+      poly.erase(poly.begin() + long(k));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  if (orient2d(P[poly[0]], P[poly[1]], P[poly[2]], drop) != s) return false;
+  out.push_back({poly[0], poly[1], poly[2]});
+  return true;
+}
+
+struct HalfEdge {
+  uint64_t key;  // min << 32 | max
+  uint32_t id;   // corner id: the half-edge starts at that corner
+};
+
+uint64_t ekey(uint32_t a, uint32_t b) {
+  return a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
+}
+
+}  // namespace
+
+StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
+  const std::string& src = raw.source;
+  auto fail = [&](const std::string& what) { return InvalidArgument(src + ": " + what); };
+  const auto& P = raw.points;
+  const auto& F = raw.faces;
+  const uint32_t nf = uint32_t(F.size());
+
+  // 1. Empty mesh.
+  if (F.empty() || P.empty()) return fail("empty mesh (no faces)");
+
+  // 2. Face size and repeated vertex indices (and index range).
+  for (uint32_t f = 0; f < nf; ++f) {
+    if (F[f].size() < 3)
+      return fail("face " + S(f) + " has " + S(F[f].size()) + " vertices (at least 3 needed)");
+    for (size_t i = 0; i < F[f].size(); ++i) {
+      if (F[f][i] >= P.size())
+        return fail("face " + S(f) + " refers to missing vertex " + S(F[f][i]));
+      for (size_t j = 0; j < i; ++j)
+        if (F[f][i] == F[f][j])
+          return fail("face " + S(f) + " has the repeated vertex index " + S(F[f][i]));
+    }
+  }
+
+  // 3. Polygons: planar and simple; split into triangles. 4. zero-area faces.
+  std::vector<Triangle> tris;
+  std::vector<uint32_t> tri_face;
+  tris.reserve(nf);
+  tri_face.reserve(nf);
+  std::vector<uint8_t> degenerate(nf, 0);
+  for (uint32_t f = 0; f < nf; ++f) {
+    const auto& v = F[f];
+    if (v.size() == 3) {
+      if (collinear(P[v[0]], P[v[1]], P[v[2]])) degenerate[f] = 1;
+      tris.push_back({v[0], v[1], v[2]});
+      tri_face.push_back(f);
+      continue;
+    }
+    // a non-collinear triple v0, v[k-1], v[k]... first one with v0, v1 fixed when possible
+    size_t n = v.size();
+    int ia = -1, ib = -1, ic = -1;
+    for (size_t i = 1; i < n && ia < 0; ++i)
+      for (size_t j = i + 1; j < n; ++j)
+        if (!collinear(P[v[0]], P[v[i]], P[v[j]])) {
+          ia = 0, ib = int(i), ic = int(j);
+          break;
+        }
+    if (ia < 0) {
+      degenerate[f] = 1;
+      continue;
+    }
+    const Point3 &a = P[v[ia]], &b = P[v[ib]], &c = P[v[ic]];
+    for (size_t k = 0; k < n; ++k)
+      if (orient3d(a, b, c, P[v[k]]) != Sign::kZero)
+        return fail("face " + S(f) + " is not planar (vertex " + S(v[k]) +
+                    " is off the plane of vertices " + S(v[ia]) + ", " + S(v[ib]) + ", " +
+                    S(v[ic]) + ")");
+    int drop = drop_axis(a, b, c);
+    size_t before = tris.size();
+    if (!triangulate_polygon(P, v, drop, tris))
+      return fail("face " + S(f) + " is a self-overlapping polygon");
+    for (size_t t = before; t < tris.size(); ++t) tri_face.push_back(f);
+  }
+  for (uint32_t f = 0; f < nf; ++f)
+    if (degenerate[f]) return fail("face " + S(f) + " has zero area (all vertices collinear)");
+
+  // 5. Duplicate faces (same vertex set).
+  {
+    std::vector<std::vector<uint32_t>> sorted(nf);
+    std::vector<uint32_t> order(nf);
+    for (uint32_t f = 0; f < nf; ++f) {
+      sorted[f] = F[f];
+      std::sort(sorted[f].begin(), sorted[f].end());
+    }
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      return sorted[a] != sorted[b] ? sorted[a] < sorted[b] : a < b;
+    });
+    uint32_t best_a = UINT32_MAX, best_b = UINT32_MAX, group_first = 0;
+    for (uint32_t k = 0; k < nf; ++k) {
+      if (k == 0 || sorted[order[k]] != sorted[order[k - 1]]) {
+        group_first = order[k];
+      } else if (order[k] < best_b) {
+        best_a = group_first;
+        best_b = order[k];
+      }
+    }
+    if (best_a != UINT32_MAX)
+      return fail("faces " + S(best_a) + " and " + S(best_b) + " are duplicates (same vertices)");
+  }
+
+  // Corners / half-edges of the input polygons.
+  std::vector<uint32_t> first(nf + 1, 0);
+  for (uint32_t f = 0; f < nf; ++f) first[f + 1] = first[f] + uint32_t(F[f].size());
+  const uint32_t nc = first[nf];
+  std::vector<uint32_t> corner_face(nc);
+  for (uint32_t f = 0; f < nf; ++f)
+    for (uint32_t c = first[f]; c < first[f + 1]; ++c) corner_face[c] = f;
+  auto cv = [&](uint32_t c) { return F[corner_face[c]][c - first[corner_face[c]]]; };
+  auto cnext = [&](uint32_t c) {
+    uint32_t f = corner_face[c];
+    return c + 1 == first[f + 1] ? first[f] : c + 1;
+  };
+  auto cprev = [&](uint32_t c) {
+    uint32_t f = corner_face[c];
+    return c == first[f] ? first[f + 1] - 1 : c - 1;
+  };
+  std::vector<HalfEdge> he(nc);
+  for (uint32_t c = 0; c < nc; ++c) he[c] = {ekey(cv(c), cv(cnext(c))), c};
+  std::sort(he.begin(), he.end(), [](const HalfEdge& a, const HalfEdge& b) {
+    return a.key != b.key ? a.key < b.key : a.id < b.id;
+  });
+  // Per half-edge: number of uses of its undirected edge and its twin.
+  std::vector<uint32_t> uses(nc), twin(nc, UINT32_MAX);
+  for (size_t i = 0; i < nc;) {
+    size_t j = i;
+    while (j < nc && he[j].key == he[i].key) ++j;
+    for (size_t k = i; k < j; ++k) uses[he[k].id] = uint32_t(j - i);
+    if (j - i == 2) {
+      twin[he[i].id] = he[i + 1].id;
+      twin[he[i + 1].id] = he[i].id;
+    }
+    i = j;
+  }
+  // 6. Border edges, 7. non-manifold edges, 8. inconsistent orientation: first offending
+  // edge in input order.
+  for (uint32_t c = 0; c < nc; ++c)
+    if (uses[c] == 1)
+      return fail("border edge " + edge_name(cv(c), cv(cnext(c))) + " of face " +
+                  S(corner_face[c]) + " is used by no other face (mesh not closed)");
+  for (uint32_t c = 0; c < nc; ++c)
+    if (uses[c] > 2)
+      return fail("non-manifold edge " + edge_name(cv(c), cv(cnext(c))) + " is used by " +
+                  S(uses[c]) + " faces (first: face " + S(corner_face[c]) + ")");
+  for (uint32_t c = 0; c < nc; ++c)
+    if (cv(twin[c]) == cv(c))
+      return fail("inconsistent orientation: faces " + S(corner_face[c]) + " and " +
+                  S(corner_face[twin[c]]) + " both traverse edge " +
+                  edge_name(cv(c), cv(cnext(c))) + " in the same direction");
+
+  // 9. Non-manifold vertices: the corners at a vertex must form a single fan
+  // (next corner around v = twin of the incoming half-edge).
+  {
+    std::vector<uint32_t> count(P.size(), 0), start(P.size(), UINT32_MAX);
+    for (uint32_t c = 0; c < nc; ++c) {
+      ++count[cv(c)];
+      if (start[cv(c)] == UINT32_MAX) start[cv(c)] = c;
+    }
+    for (uint32_t c = 0; c < nc; ++c) {
+      uint32_t v = cv(c);
+      if (start[v] != c) continue;
+      uint32_t steps = 0, k = c;
+      do {
+        k = twin[cprev(k)];
+        ++steps;
+      } while (k != c && steps <= count[v]);
+      if (steps != count[v])
+        return fail("non-manifold vertex " + S(v) + ": its " + S(count[v]) +
+                    " faces form more than one fan");
+    }
+  }
+
+  // Shells: edge-connected components of faces.
+  std::vector<uint32_t> comp(nf);
+  std::iota(comp.begin(), comp.end(), 0u);
+  auto find = [&](uint32_t x) {
+    while (comp[x] != x) x = comp[x] = comp[comp[x]];
+    return x;
+  };
+  for (uint32_t c = 0; c < nc; ++c) {
+    uint32_t a = find(corner_face[c]), b = find(corner_face[twin[c]]);
+    if (a != b) comp[std::max(a, b)] = std::min(a, b);
+  }
+  std::vector<uint32_t> shell_of_face(nf), shell_id(nf, UINT32_MAX);
+  uint32_t nshell = 0;
+  for (uint32_t f = 0; f < nf; ++f) {
+    uint32_t r = find(f);
+    if (shell_id[r] == UINT32_MAX) shell_id[r] = nshell++;
+    shell_of_face[f] = shell_id[r];
+  }
+  const uint32_t nt = uint32_t(tris.size());
+
+  // 10. Orientation: exact signed volume per shell (sum of det(a, b, c)); filter first.
+  std::vector<std::vector<uint32_t>> shell_tris(nshell);
+  for (uint32_t t = 0; t < nt; ++t) shell_tris[shell_of_face[tri_face[t]]].push_back(t);
+  auto volume_expr = [&](const std::vector<uint32_t>& ts) {
+    return [&](auto tag) {
+      using T = decltype(tag);
+      T sum(0.0);
+      for (uint32_t t : ts) {
+        const Point3 &a = P[tris[t][0]], &b = P[tris[t][1]], &c = P[tris[t][2]];
+        T ax(a.x), ay(a.y), az(a.z), bx(b.x), by(b.y), bz(b.z), cx(c.x), cy(c.y), cz(c.z);
+        sum = sum + (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) +
+                     az * (bx * cy - by * cx));
+      }
+      return sum;
+    };
+  };
+  auto sign_of = [&](const auto& expr) {
+    if (auto s = expr(exact::Approx{}).sign()) return *s;
+    return expr(exact::Dyadic{}).sign();
+  };
+  std::vector<bool> is_void(nshell);
+  for (uint32_t s = 0; s < nshell; ++s) {
+    Sign v = sign_of(volume_expr(shell_tris[s]));
+    if (v == Sign::kZero)
+      return fail("shell " + S(s) + " (containing face " + S(tri_face[shell_tris[s][0]]) +
+                  ") encloses zero volume");
+    is_void[s] = v == Sign::kNegative;
+  }
+  {
+    std::vector<uint32_t> all(nt);
+    std::iota(all.begin(), all.end(), 0u);
+    if (sign_of(volume_expr(all)) != Sign::kPositive)
+      return fail("faces point inward (total signed volume is not positive)");
+  }
+
+  // Triangle adjacency (includes the diagonals inside split polygons). A diagonal that is
+  // also an edge elsewhere makes that edge non-manifold: a face touches a polygon's inside.
+  std::vector<std::array<uint32_t, 3>> neighbor(nt, {UINT32_MAX, UINT32_MAX, UINT32_MAX});
+  {
+    std::vector<HalfEdge> th(3 * size_t(nt));
+    for (uint32_t t = 0; t < nt; ++t)
+      for (int i = 0; i < 3; ++i) th[3 * t + i] = {ekey(tris[t][i], tris[t][(i + 1) % 3]), 3 * t + i};
+    std::sort(th.begin(), th.end(), [](const HalfEdge& a, const HalfEdge& b) {
+      return a.key != b.key ? a.key < b.key : a.id < b.id;
+    });
+    for (size_t i = 0; i < th.size();) {
+      size_t j = i;
+      while (j < th.size() && th[j].key == th[i].key) ++j;
+      if (j - i != 2) {
+        uint32_t t = th[i].id / 3;
+        return fail("self-intersection: edge " + edge_name(uint32_t(th[i].key >> 32),
+                                                           uint32_t(th[i].key)) +
+                    " inside polygon face " + S(tri_face[t]) + " is also used by other faces");
+      }
+      neighbor[th[i].id / 3][th[i].id % 3] = th[i + 1].id / 3;
+      neighbor[th[i + 1].id / 3][th[i + 1].id % 3] = th[i].id / 3;
+      i = j;
+    }
+  }
+
+  // 11. Self-intersections.
+  if (auto pair = mesh_internal::find_self_intersection(P, tris, tri_face)) {
+    return fail("self-intersection: faces " + S(pair->first) + " and " + S(pair->second) +
+                " intersect");
+  }
+
+  SolidMesh m;
+  m.source = src;
+  m.points = P;
+  m.triangles = std::move(tris);
+  m.triangle_face = std::move(tri_face);
+  m.input_face_count = nf;
+  m.neighbor = std::move(neighbor);
+  m.shell.resize(nt);
+  for (uint32_t t = 0; t < nt; ++t) m.shell[t] = shell_of_face[m.triangle_face[t]];
+  m.shell_is_void = std::move(is_void);
+  m.groups = raw.groups;
+  return m;
+}
+
+}  // namespace gvm
