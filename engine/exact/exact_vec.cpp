@@ -168,4 +168,21 @@ bool same_direction(const ExactVec& a, const ExactVec& b) {
   return parallel(a, b) && sign_dot(a, b) == Sign::kPositive;
 }
 
+UnitEstimate unit_estimate(const ExactVec& a) {
+  const auto& v = node_of(a).approx;
+  double len2 = 0, err2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    len2 += v[i].value() * v[i].value();
+    err2 += v[i].error() * v[i].error();
+  }
+  double len = std::sqrt(len2), err = std::sqrt(err2) * (1 + 0x1p-40);
+  if (!(len > 2 * err) || !std::isfinite(len)) {
+    // The filter cannot locate the direction: fall back to an exact evaluation.
+    return {a.unit(), 0x1p-40};
+  }
+  // |v/|v| - w/|w|| <= 2 |v - w| / |v| for the exact w within err of v.
+  double radius = 2 * err / (len - err) + 0x1p-50;
+  return {{v[0].value() / len, v[1].value() / len, v[2].value() / len}, radius};
+}
+
 }  // namespace gvm::exact

@@ -39,6 +39,8 @@ class ExactVec {
   std::shared_ptr<const Node> node_;
 };
 
+ExactVec cross(const ExactVec& a, const ExactVec& b);
+
 // Convenience: the normal (b - a) x (c - a) of triangle a, b, c.
 ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c);
 
@@ -50,5 +52,13 @@ bool is_zero(const ExactVec& a);
 bool parallel(const ExactVec& a, const ExactVec& b);
 // Same direction on the sphere: parallel and a . b > 0.
 bool same_direction(const ExactVec& a, const ExactVec& b);
+
+// A unit vector within `radius` (Euclidean, certified) of the exact direction of a
+// non-zero vector: for bounding boxes and candidate searches, never for decisions.
+struct UnitEstimate {
+  std::array<double, 3> unit;
+  double radius;
+};
+UnitEstimate unit_estimate(const ExactVec& a);
 
 }  // namespace gvm::exact
