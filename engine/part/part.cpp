@@ -1,0 +1,492 @@
+#include "gvm/part.h"
+
+#include <google/protobuf/struct.pb.h>
+#include <google/protobuf/util/json_util.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+#include "exact/filtered.h"
+#include "exact/predicates.h"
+#include "part/convex_hull.h"
+
+namespace gvm {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+struct UnionFind {
+  std::vector<uint32_t> parent;
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  uint32_t find(uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(uint32_t a, uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // root = smallest member
+  }
+};
+
+// Is the angle between the normals of triangles t1 and t2 smaller than theta, with
+// cos_theta = cos(theta)? The angle is a user tolerance, not a geometric decision, but
+// we still decide it exactly against the double constant cos_theta (taken as exact), so
+// that the result does not depend on rounding: angle < theta <=> n1.n2 > k |n1| |n2|,
+// i.e. with d = n1.n2 and k = cos_theta:
+//   k > 0:  d > 0 and d^2 > k^2 |n1|^2 |n2|^2
+//   k = 0:  d > 0
+//   k < 0:  d >= 0, or d^2 < k^2 |n1|^2 |n2|^2.
+bool normals_within(const Point3& a1, const Point3& b1, const Point3& c1, const Point3& a2,
+                    const Point3& b2, const Point3& c2, double k) {
+  auto normal = [](auto tag, const Point3& a, const Point3& b, const Point3& c) {
+    using T = decltype(tag);
+    T ux = T(b.x) - T(a.x), uy = T(b.y) - T(a.y), uz = T(b.z) - T(a.z);
+    T vx = T(c.x) - T(a.x), vy = T(c.y) - T(a.y), vz = T(c.z) - T(a.z);
+    return std::array<T, 3>{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+  };
+  auto dot = [&](auto tag) {
+    auto n1 = normal(tag, a1, b1, c1);
+    auto n2 = normal(tag, a2, b2, c2);
+    return n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+  };
+  Sign sd = exact::filtered_sign(dot);
+  if (k == 0) return sd == Sign::kPositive;
+  if (k > 0 && sd != Sign::kPositive) return false;
+  if (k < 0 && sd != Sign::kNegative) return true;
+  Sign s = exact::filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    auto n1 = normal(tag, a1, b1, c1);
+    auto n2 = normal(tag, a2, b2, c2);
+    T d = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+    T l1 = n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2];
+    T l2 = n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2];
+    return d * d - T(k) * T(k) * l1 * l2;
+  });
+  return k > 0 ? s == Sign::kPositive : s == Sign::kNegative;
+}
+
+// Builds a CSR table from (key, value) pairs.
+void build_csr(size_t keys, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
+               std::vector<uint32_t>& offset, std::vector<uint32_t>& values) {
+  offset.assign(keys + 1, 0);
+  for (const auto& [k, v] : pairs) ++offset[k + 1];
+  for (size_t i = 1; i <= keys; ++i) offset[i] += offset[i - 1];
+  values.resize(pairs.size());
+  std::vector<uint32_t> pos(offset.begin(), offset.end() - 1);
+  for (const auto& [k, v] : pairs) values[pos[k]++] = v;
+}
+
+// A sorted set of triangle ids with O(log n) membership.
+struct IdSet {
+  std::vector<uint32_t> ids;
+  IdSet(std::span<const uint32_t> s, size_t limit) {
+    for (uint32_t t : s)
+      if (t < limit) ids.push_back(t);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  }
+  bool contains(uint32_t t) const { return std::binary_search(ids.begin(), ids.end(), t); }
+};
+
+// Bounding-box tree over a set of triangles (structure only: boxes are exact min/max of
+// input coordinates, so corner points are input-like doubles usable in exact predicates).
+struct BoxTree {
+  struct Node {
+    Point3 lo, hi;
+    uint32_t begin, end;      // range in `items`
+    uint32_t left = kNone, right = kNone;
+  };
+  std::vector<Node> nodes;
+  std::vector<uint32_t> items;
+
+  BoxTree(const SolidMesh& m, std::vector<uint32_t> tris) : items(std::move(tris)) {
+    if (!items.empty()) build(m, 0, static_cast<uint32_t>(items.size()));
+  }
+
+  uint32_t build(const SolidMesh& m, uint32_t begin, uint32_t end) {
+    Node n;
+    n.begin = begin, n.end = end;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = begin; i < end; ++i)
+      for (uint32_t v : m.triangles[items[i]])
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], m.points[v][k]);
+          hi[k] = std::max(hi[k], m.points[v][k]);
+        }
+    n.lo = {lo[0], lo[1], lo[2]};
+    n.hi = {hi[0], hi[1], hi[2]};
+    uint32_t id = static_cast<uint32_t>(nodes.size());
+    nodes.push_back(n);
+    if (end - begin > 4) {
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+      auto key = [&](uint32_t t) {
+        const Triangle& tr = m.triangles[t];
+        return m.points[tr[0]][axis] + m.points[tr[1]][axis] + m.points[tr[2]][axis];
+      };
+      uint32_t mid = begin + (end - begin) / 2;
+      std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                       [&](uint32_t x, uint32_t y) { return key(x) < key(y); });
+      uint32_t l = build(m, begin, mid);
+      uint32_t r = build(m, mid, end);
+      nodes[id].left = l;
+      nodes[id].right = r;
+    }
+    return id;
+  }
+};
+
+}  // namespace
+
+struct Part::Impl {
+  SolidMesh mesh;
+  std::vector<uint8_t> hull;
+  std::vector<int32_t> region;
+  std::vector<ConcaveRegion> regions;
+  std::vector<Feature> features;
+  std::vector<uint32_t> vt_offset, vt;  // vertex -> incident triangles
+  std::vector<uint32_t> vv_offset, vv;  // vertex -> neighbor vertices
+
+  const Point3& P(uint32_t t, int i) const { return mesh.points[mesh.triangles[t][i]]; }
+};
+
+Part::Part(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Part::Part(Part&&) noexcept = default;
+Part& Part::operator=(Part&&) noexcept = default;
+Part::~Part() = default;
+
+const SolidMesh& Part::mesh() const { return impl_->mesh; }
+bool Part::is_hull(uint32_t t) const { return impl_->hull[t] != 0; }
+int32_t Part::region_of(uint32_t t) const { return impl_->region[t]; }
+const std::vector<ConcaveRegion>& Part::regions() const { return impl_->regions; }
+const std::vector<Feature>& Part::features() const { return impl_->features; }
+
+StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
+  auto impl = std::make_unique<Impl>();
+  const size_t nt = mesh.triangles.size();
+  const std::string src = mesh.source.empty() ? std::string("part") : mesh.source;
+  if (nt == 0) return InvalidArgument(src + ": the part has no triangles");
+  if (mesh.neighbor.size() != nt || mesh.triangle_face.size() != nt || mesh.shell.size() != nt)
+    return FailedPrecondition(src + ": the solid mesh has no topology (use build_solid)");
+  for (size_t t = 0; t < nt; ++t) {
+    for (int i = 0; i < 3; ++i)
+      if (mesh.triangles[t][i] >= mesh.points.size() || mesh.neighbor[t][i] >= nt)
+        return FailedPrecondition(src + ": triangle " + std::to_string(t) +
+                                  " has an invalid vertex or neighbor");
+    if (mesh.triangle_face[t] >= mesh.input_face_count || mesh.shell[t] >= mesh.shell_is_void.size())
+      return FailedPrecondition(src + ": triangle " + std::to_string(t) +
+                                " has an invalid input face or shell");
+  }
+  // User groups: valid, disjoint input faces.
+  std::vector<uint32_t> face_group(mesh.input_face_count, kNone);
+  std::vector<std::string> group_names;
+  for (const auto& [name, faces] : options.face_groups) {
+    if (faces.empty()) return InvalidArgument(src + ": face group '" + name + "' is empty");
+    uint32_t g = static_cast<uint32_t>(group_names.size());
+    group_names.push_back(name);
+    for (uint32_t f : faces) {
+      if (f >= mesh.input_face_count)
+        return InvalidArgument(src + ": face group '" + name + "' names face " +
+                               std::to_string(f) + ", but the part has " +
+                               std::to_string(mesh.input_face_count) + " faces");
+      if (face_group[f] != kNone)
+        return InvalidArgument(src + ": face " + std::to_string(f) + " is in face groups '" +
+                               group_names[face_group[f]] + "' and '" + name + "'");
+      face_group[f] = g;
+    }
+  }
+
+  Impl& I = *impl;
+  I.mesh = std::move(mesh);
+  const SolidMesh& m = I.mesh;
+  const size_t nv = m.points.size();
+
+  // Adjacency: vertex -> triangles, vertex -> neighbor vertices (each directed triangle
+  // edge (a, b) gives b as a neighbor of a; on a closed manifold every edge appears once
+  // in each direction).
+  {
+    std::vector<std::pair<uint32_t, uint32_t>> vt, vv;
+    vt.reserve(3 * nt);
+    vv.reserve(3 * nt);
+    for (uint32_t t = 0; t < nt; ++t)
+      for (int i = 0; i < 3; ++i) {
+        vt.emplace_back(m.triangles[t][i], t);
+        vv.emplace_back(m.triangles[t][i], m.triangles[t][(i + 1) % 3]);
+      }
+    build_csr(nv, vt, I.vt_offset, I.vt);
+    build_csr(nv, vv, I.vv_offset, I.vv);
+  }
+
+  // 1. Hull facets. A triangle is a hull facet iff every vertex lies on the closed
+  // negative side of its plane, i.e. iff the maximum of n . x over the convex hull's
+  // vertices is attained on the triangle's plane. The maximum is found exactly by hill
+  // climbing on the hull graph, warm-started from the answer of a neighboring triangle.
+  {
+    std::vector<uint32_t> use;
+    use.reserve(nv);
+    for (uint32_t v = 0; v < nv; ++v)
+      if (I.vt_offset[v + 1] > I.vt_offset[v]) use.push_back(v);
+    part::ConvexHull hull = part::convex_hull(m.points, use);
+    if (hull.facets.empty())
+      return InvalidArgument(src + ": all vertices are coplanar, the part bounds no volume");
+    I.hull.assign(nt, 0);
+    std::vector<uint32_t> start(nt, kNone);
+    std::vector<uint32_t> queue;
+    queue.reserve(nt);
+    for (uint32_t seed = 0; seed < nt; ++seed) {
+      if (start[seed] != kNone) continue;
+      start[seed] = hull.any_vertex;
+      queue.assign(1, seed);
+      for (size_t qi = 0; qi < queue.size(); ++qi) {
+        uint32_t t = queue[qi];
+        uint32_t best = part::hull_extreme_vertex(hull, m.points, I.P(t, 0), I.P(t, 1),
+                                                  I.P(t, 2), start[t]);
+        I.hull[t] = exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[best]) !=
+                    Sign::kPositive;
+        for (uint32_t u : m.neighbor[t])
+          if (start[u] == kNone) {
+            start[u] = best;
+            queue.push_back(u);
+          }
+      }
+    }
+  }
+
+  // 2. Concave regions: edge-connected components of non-hull triangles.
+  I.region.assign(nt, -1);
+  for (uint32_t seed = 0; seed < nt; ++seed) {
+    if (I.hull[seed] || I.region[seed] >= 0) continue;
+    ConcaveRegion r;
+    r.id = static_cast<uint32_t>(I.regions.size());
+    r.is_void = m.shell_is_void[m.shell[seed]];
+    I.region[seed] = static_cast<int32_t>(r.id);
+    r.triangles.push_back(seed);
+    for (size_t qi = 0; qi < r.triangles.size(); ++qi)
+      for (uint32_t u : m.neighbor[r.triangles[qi]])
+        if (!I.hull[u] && I.region[u] < 0) {
+          I.region[u] = static_cast<int32_t>(r.id);
+          r.triangles.push_back(u);
+        }
+    std::sort(r.triangles.begin(), r.triangles.end());
+    I.regions.push_back(std::move(r));
+  }
+
+  // 3. Features.
+  {
+    const double theta = options.feature_angle_degrees * M_PI / 180.0;
+    const double k = theta >= M_PI ? -1.0 : std::cos(theta);
+    std::vector<uint32_t> tri_group(nt, kNone);
+    for (uint32_t t = 0; t < nt; ++t) tri_group[t] = face_group[m.triangle_face[t]];
+    UnionFind uf(nt);
+    // Triangles of one input face, and of one user group, always belong together.
+    std::vector<uint32_t> face_first(m.input_face_count, kNone), group_first(group_names.size(), kNone);
+    for (uint32_t t = 0; t < nt; ++t) {
+      uint32_t f = m.triangle_face[t];
+      if (face_first[f] == kNone) face_first[f] = t; else uf.unite(face_first[f], t);
+      uint32_t g = tri_group[t];
+      if (g != kNone) {
+        if (group_first[g] == kNone) group_first[g] = t; else uf.unite(group_first[g], t);
+      }
+    }
+    for (uint32_t t = 0; t < nt; ++t) {
+      if (tri_group[t] != kNone) continue;
+      for (uint32_t u : m.neighbor[t]) {
+        if (u <= t || tri_group[u] != kNone) continue;
+        if (I.hull[t] != I.hull[u] || I.region[t] != I.region[u]) continue;
+        if (uf.find(t) == uf.find(u)) continue;
+        if (normals_within(I.P(t, 0), I.P(t, 1), I.P(t, 2), I.P(u, 0), I.P(u, 1), I.P(u, 2), k))
+          uf.unite(t, u);
+      }
+    }
+    // Roots are the smallest members, so features come in order of smallest triangle.
+    std::vector<uint32_t> feature_of_root(nt, kNone);
+    for (uint32_t t = 0; t < nt; ++t) {
+      uint32_t r = uf.find(t);
+      if (feature_of_root[r] == kNone) {
+        feature_of_root[r] = static_cast<uint32_t>(I.features.size());
+        Feature f;
+        f.id = feature_of_root[r];
+        f.name = tri_group[t] != kNone ? group_names[tri_group[t]] : "F" + std::to_string(f.id);
+        f.on_hull = true;
+        I.features.push_back(std::move(f));
+      }
+      Feature& f = I.features[feature_of_root[r]];
+      f.triangles.push_back(t);
+      if (!I.hull[t]) {
+        if (f.on_hull) f.region = I.region[t];
+        f.on_hull = false;
+      }
+    }
+  }
+  return Part(std::move(impl));
+}
+
+std::vector<uint32_t> Part::neighbor_occluders(std::span<const uint32_t> s) const {
+  const Impl& I = *impl_;
+  const SolidMesh& m = I.mesh;
+  IdSet in_s(s, m.triangles.size());
+  std::vector<uint32_t> out;
+  std::vector<uint32_t> verts;
+  for (uint32_t t : in_s.ids) {
+    const Triangle& tr = m.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      verts.push_back(tr[i]);
+      uint32_t u = m.neighbor[t][i];
+      if (in_s.contains(u)) continue;
+      const Triangle& ur = m.triangles[u];
+      uint32_t opp = ur[0];
+      for (uint32_t v : ur)
+        if (v != tr[i] && v != tr[(i + 1) % 3]) opp = v;
+      // Concave edge: the far vertex of u is strictly in front of t.
+      if (exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[opp]) == Sign::kPositive)
+        out.push_back(u);
+    }
+  }
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  for (uint32_t v : verts) {
+    const Point3& pv = m.points[v];
+    for (uint32_t k = I.vt_offset[v]; k < I.vt_offset[v + 1]; ++k) {
+      uint32_t f = I.vt[k];
+      if (in_s.contains(f)) continue;
+      bool covers = true;
+      for (uint32_t j = I.vv_offset[v]; j < I.vv_offset[v + 1] && covers; ++j)
+        // (w - v) . n_F >= 0: every edge at v on the closed front side of F.
+        covers = exact::det_diff(I.P(f, 0), I.P(f, 1), I.P(f, 0), I.P(f, 2), pv,
+                                 m.points[I.vv[j]]) != Sign::kNegative;
+      if (covers) out.push_back(f);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<uint32_t> Part::potential_occluders(
+    std::span<const uint32_t> s, std::span<const uint32_t> neighbor,
+    const std::function<bool(uint32_t)>& may_be_front_hit) const {
+  const Impl& I = *impl_;
+  const SolidMesh& m = I.mesh;
+  IdSet in_s(s, m.triangles.size());
+  IdSet in_n(neighbor, m.triangles.size());
+
+  // S's non-hull triangles, per concave region.
+  std::map<int32_t, std::vector<uint32_t>> s_by_region;
+  for (uint32_t t : in_s.ids)
+    if (I.region[t] >= 0) s_by_region[I.region[t]].push_back(t);
+
+  std::vector<uint32_t> passed;
+  for (auto& [r, s_r] : s_by_region) {
+    std::vector<uint32_t> cand;
+    for (uint32_t t : I.regions[r].triangles)
+      if (!in_s.contains(t) && !in_n.contains(t)) cand.push_back(t);
+    if (cand.empty()) continue;
+    BoxTree tree(m, s_r);
+    std::vector<uint8_t> ok(cand.size(), 0);
+    tbb::parallel_for(size_t(0), cand.size(), [&](size_t ci) {
+      const uint32_t fp = cand[ci];
+      const Point3 &a = I.P(fp, 0), &b = I.P(fp, 1), &c = I.P(fp, 2);
+      Sign ns[3];
+      for (int k = 0; k < 3; ++k) ns[k] = exact::cross_component(a, b, c, k);
+      uint32_t stack[128];
+      int top = 0;
+      stack[top++] = 0;
+      while (top > 0) {
+        const BoxTree::Node& n = tree.nodes[stack[--top]];
+        // Certified prune for condition (i): the box corner farthest along n_F' (chosen
+        // by the exact signs of n_F') is not strictly in front of F', so no vertex in
+        // the box is.
+        Point3 corner{ns[0] == Sign::kPositive ? n.hi.x : n.lo.x,
+                      ns[1] == Sign::kPositive ? n.hi.y : n.lo.y,
+                      ns[2] == Sign::kPositive ? n.hi.z : n.lo.z};
+        if (exact::orient3d(a, b, c, corner) != Sign::kPositive) continue;
+        if (n.left != kNone) {
+          stack[top++] = n.left;
+          stack[top++] = n.right;
+          continue;
+        }
+        for (uint32_t i = n.begin; i < n.end; ++i) {
+          const uint32_t fs = tree.items[i];
+          bool cond1 = false, cond2 = false;
+          for (int k = 0; k < 3 && !cond1; ++k)
+            cond1 = exact::orient3d(a, b, c, I.P(fs, k)) == Sign::kPositive;
+          if (!cond1) continue;
+          const Point3 *p[3] = {&a, &b, &c};
+          for (int k = 0; k < 3 && !cond2; ++k)
+            cond2 = exact::orient3d(I.P(fs, 0), I.P(fs, 1), I.P(fs, 2), *p[k]) != Sign::kNegative;
+          if (cond2) {
+            ok[ci] = 1;
+            top = 0;
+            break;
+          }
+        }
+      }
+    });
+    for (size_t ci = 0; ci < cand.size(); ++ci)
+      if (ok[ci]) passed.push_back(cand[ci]);
+  }
+  std::sort(passed.begin(), passed.end());
+  std::vector<uint32_t> out;
+  for (uint32_t t : passed)
+    if (may_be_front_hit(t)) out.push_back(t);
+  return out;
+}
+
+StatusOr<std::map<std::string, std::vector<uint32_t>>> read_face_groups(
+    const std::string& path, uint32_t face_count) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return NotFound(path + ": cannot open the face group file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  google::protobuf::Struct root;
+  auto st = google::protobuf::util::JsonStringToMessage(ss.str(), &root);
+  if (!st.ok())
+    return InvalidArgument(path + ": not a JSON object of face groups: " +
+                           std::string(st.message()));
+  std::map<std::string, std::vector<uint32_t>> groups;
+  std::map<uint32_t, std::string> owner;
+  std::vector<std::string> names;  // sorted, so that messages do not depend on hashing
+  for (const auto& field : root.fields()) names.push_back(field.first);
+  std::sort(names.begin(), names.end());
+  for (const std::string& name : names) {
+    const google::protobuf::Value& value = root.fields().at(name);
+    const std::string where = path + ": face group '" + name + "'";
+    if (!value.has_list_value())
+      return InvalidArgument(where + " is not a list of face indices");
+    std::vector<uint32_t> faces;
+    const auto& list = value.list_value();
+    if (list.values_size() == 0) return InvalidArgument(where + " is empty");
+    for (int i = 0; i < list.values_size(); ++i) {
+      const auto& v = list.values(i);
+      if (!v.has_number_value())
+        return InvalidArgument(where + ": entry " + std::to_string(i) + " is not a number");
+      const double d = v.number_value();
+      if (!(d >= 0) || d != std::floor(d))
+        return InvalidArgument(where + ": entry " + std::to_string(i) +
+                               " is not a non-negative integer face index");
+      if (d >= static_cast<double>(face_count))
+        return InvalidArgument(where + ": face " + std::to_string(static_cast<uint64_t>(d)) +
+                               " does not exist (the part has " + std::to_string(face_count) +
+                               " faces)");
+      const uint32_t f = static_cast<uint32_t>(d);
+      auto [it, inserted] = owner.emplace(f, name);
+      if (!inserted)
+        return InvalidArgument(path + ": face " + std::to_string(f) +
+                               (it->second == name ? " appears twice in face group '" + name + "'"
+                                                   : " is in face groups '" + it->second +
+                                                         "' and '" + name + "'"));
+      faces.push_back(f);
+    }
+    groups.emplace(name, std::move(faces));
+  }
+  return groups;
+}
+
+}  // namespace gvm

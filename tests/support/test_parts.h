@@ -1,0 +1,58 @@
+// Exact test parts with integer coordinates: small machined shapes (slot, hole, pocket,
+// step, T-slot, ...) built as unions of grid cells, emitted as RawMesh (triangles, or
+// quads on request) with every maximal planar face named in RawMesh::groups.
+//
+// Group names: semantic names where the part defines them ("floor", "wall_x0", ...), and
+// otherwise "<axis><sign><coordinate>" of the face's plane in the part's own units before
+// scaling/rotation, e.g. "z+8" for a face on z = 8 with outward normal +z, suffixed
+// "_0", "_1", ... when several disjoint faces share a plane. The groups are disjoint and
+// cover every face, so they are the exact planar-face partition of the part.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "gvm/mesh.h"
+
+namespace gvm::test {
+
+struct TestPartOptions {
+  // 0: none; 1: M = [[3,4,0],[-4,3,0],[0,0,5]] (3-4-5 rotation about z, scaled by 5);
+  // 2: Rx * M with Rx = [[5,0,0],[0,3,4],[0,-4,3]]. Both keep coordinates integer.
+  int rotation = 0;
+  // Split every grid quad into 4 coplanar triangles (fan from its center).
+  bool split = false;
+  // Emit each grid quad as one quadrilateral input face (ignored when split).
+  bool quads = false;
+};
+
+// Every part is scaled by 12 so that quad centers stay integer.
+RawMesh box_part(const TestPartOptions& o = {});            // 10 x 6 x 4 block
+RawMesh slot_part(const TestPartOptions& o = {});           // groove along y, open ends
+RawMesh through_hole_part(const TestPartOptions& o = {});   // square hole along z
+RawMesh pocket_part(const TestPartOptions& o = {});         // blind square pocket
+RawMesh drafted_pocket_part(const TestPartOptions& o = {}); // walls lean out 1 in 4
+RawMesh step_part(const TestPartOptions& o = {});           // L-shaped step along y
+RawMesh tslot_closed_part(const TestPartOptions& o = {});   // T-slot closed at both ends
+RawMesh tslot_open_part(const TestPartOptions& o = {});     // T-slot open at both ends
+RawMesh two_pockets_part(const TestPartOptions& o = {});    // plate with two pockets
+RawMesh pocket_with_void_part(const TestPartOptions& o = {}); // pocket + internal cubic void
+
+struct NamedTestPart {
+  std::string name;
+  RawMesh (*make)(const TestPartOptions&);
+};
+std::vector<NamedTestPart> all_test_parts();
+
+// Input faces of the named groups (ascending); fails a test assertion-free way: unknown
+// names contribute nothing.
+std::vector<uint32_t> faces_of(const RawMesh& raw, std::initializer_list<std::string> names);
+
+// Triangles (of a SolidMesh built from the raw mesh) whose input face is in `faces`.
+std::vector<uint32_t> triangles_of_faces(const SolidMesh& mesh, const std::vector<uint32_t>& faces);
+std::vector<uint32_t> triangles_of(const SolidMesh& mesh, const RawMesh& raw,
+                                   std::initializer_list<std::string> names);
+
+}  // namespace gvm::test
