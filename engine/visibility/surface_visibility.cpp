@@ -20,7 +20,8 @@ bool touches_void(const SolidMesh& mesh, std::span<const uint32_t> s) {
 
 }  // namespace
 
-SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const uint32_t> s) {
+SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const uint32_t> s,
+                                             bool global_occlusion) {
   const SolidMesh& mesh = part.mesh();
   SurfaceVisibility out;
   out.occluders.neighbor = part.neighbor_occluders(s);
@@ -50,6 +51,9 @@ SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const u
   if (out.occluders.potential.empty()) {
     out.kind = GvmKind::kExactNoPotentialOccluders;
     out.gvm = out.lvm;
+  } else if (global_occlusion) {
+    out.kind = GvmKind::kGlobalOcclusionComputed;
+    out.gvm = global_visibility_map(mesh, s, out.occluders.potential, out.lvm, &out.statistics);
   } else {
     out.kind = GvmKind::kGlobalOcclusionNotComputed;
   }

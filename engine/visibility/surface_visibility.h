@@ -9,12 +9,14 @@
 
 #include "gvm/part.h"
 #include "sphere/spherical_image.h"
+#include "visibility/global_visibility_map.h"
 
 namespace gvm {
 
 enum class GvmKind {
   kExactNoPotentialOccluders,   // O_S empty: GVM = LVM(S + N_S)
   kGlobalOcclusionNotComputed,  // O_S not empty: LVM(S + N_S) only bounds the GVM
+  kGlobalOcclusionComputed,     // GVM = LVM(S + N_S) - GOM(S, O_S) by the envelope
   kEmptyVoid,                   // S touches an internal void: never visible
 };
 
@@ -23,9 +25,12 @@ struct SurfaceVisibility {
   sphere::SphericalImage lvm;                 // LVM(S + N_S)
   std::optional<sphere::SphericalImage> gvm;  // set when known exactly
   GvmKind kind = GvmKind::kGlobalOcclusionNotComputed;
+  GlobalOcclusionStatistics statistics;
 };
 
-// S is a set of triangles of the part (ascending, unique).
-SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const uint32_t> s);
+// S is a set of triangles of the part (ascending, unique). With `global_occlusion`, the
+// occlusion by O_S is computed by the effective Minkowski envelope.
+SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const uint32_t> s,
+                                             bool global_occlusion = false);
 
 }  // namespace gvm

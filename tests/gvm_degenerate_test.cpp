@@ -1,0 +1,133 @@
+// Exact GVMs of the degenerate machining features users care most about.
+#include <gtest/gtest.h>
+
+#include "exact/exact_vec.h"
+#include "gvm/part.h"
+#include "support/test_parts.h"
+#include "visibility/surface_visibility.h"
+
+namespace gvm {
+namespace {
+
+using exact::ExactVec;
+
+struct Built {
+  RawMesh raw;
+  Part part;
+};
+
+Built build(RawMesh raw) {
+  auto solid = build_solid(raw);
+  EXPECT_TRUE(solid.ok()) << solid.status().message();
+  auto part = Part::analyze(std::move(*solid), PartOptions{});
+  EXPECT_TRUE(part.ok());
+  return {std::move(raw), std::move(*part)};
+}
+
+// The rotation the test parts apply, for expected directions.
+ExactVec rotated(const test::TestPartOptions& o, double x, double y, double z) {
+  Point3 p{x, y, z};
+  if (o.rotation >= 1) p = {3 * p.x + 4 * p.y, -4 * p.x + 3 * p.y, 5 * p.z};
+  if (o.rotation >= 2) p = {5 * p.x, 3 * p.y + 4 * p.z, -4 * p.y + 3 * p.z};
+  return ExactVec::from_point(p);
+}
+
+class Variants : public ::testing::TestWithParam<test::TestPartOptions> {};
+
+TEST_P(Variants, PocketWallSeesAnArcUpToTheOppositeRim) {
+  const auto o = GetParam();
+  Built b = build(test::pocket_part(o));
+  auto s = test::triangles_of(b.part.mesh(), b.raw, {"wall_x0"});
+  SurfaceVisibility vis = compute_surface_visibility(b.part, s, true);
+  ASSERT_TRUE(vis.gvm.has_value());
+  const sphere::SphericalImage& g = *vis.gvm;
+  EXPECT_EQ(g.dimension(), 1) << g.description();
+  ASSERT_EQ(g.curves().size(), 1u) << g.description();
+  // From the bottom of the wall the ray just grazes the opposite rim: dir (4, 0, 4), up
+  // to straight out of the pocket (both endpoints included).
+  ExactVec a = rotated(o, 1, 0, 1), z = rotated(o, 0, 0, 1);
+  sphere::SphericalImage expected;
+  expected.add_curve({a, z, exact::cross(a, z)});
+  EXPECT_TRUE(g == expected) << g.description();
+  EXPECT_TRUE(g.points().empty());
+}
+
+sphere::SphericalImage gvm_of(const Built& b, std::initializer_list<std::string> names) {
+  auto s = test::triangles_of(b.part.mesh(), b.raw, names);
+  EXPECT_FALSE(s.empty());
+  SurfaceVisibility vis = compute_surface_visibility(b.part, s, true);
+  EXPECT_TRUE(vis.gvm.has_value());
+  return vis.gvm ? *vis.gvm : sphere::SphericalImage{};
+}
+
+sphere::SphericalImage arc(const ExactVec& from, const ExactVec& to, const ExactVec& normal) {
+  sphere::SphericalImage img;
+  img.add_curve({from, to, normal});
+  return img;
+}
+
+TEST_P(Variants, SlotFloorSeesTheHalfCircleInItsPlaneOfSymmetry) {
+  const auto o = GetParam();
+  Built b = build(test::slot_part(o));
+  // The groove runs along y: the directions in the plane x = const, from -y over +z to +y.
+  auto expected = arc(rotated(o, 0, -1, 0), rotated(o, 0, 1, 0), rotated(o, -1, 0, 0));
+  for (auto names : {std::initializer_list<std::string>{"floor"},
+                     std::initializer_list<std::string>{"floor", "wall_x0", "wall_x1"}}) {
+    sphere::SphericalImage g = gvm_of(b, names);
+    EXPECT_TRUE(g == expected) << g.description();
+  }
+}
+
+TEST_P(Variants, ThroughHoleWallsSeeTheTwoAxisDirections) {
+  const auto o = GetParam();
+  Built b = build(test::through_hole_part(o));
+  sphere::SphericalImage g = gvm_of(b, {"wall_x0", "wall_x1", "wall_y0", "wall_y1"});
+  sphere::SphericalImage expected;
+  expected.add_point(rotated(o, 0, 0, 1));
+  expected.add_point(rotated(o, 0, 0, -1));
+  EXPECT_TRUE(g == expected) << g.description();
+}
+
+TEST_P(Variants, PocketFloorSeesOneDirection) {
+  const auto o = GetParam();
+  Built b = build(test::pocket_part(o));
+  auto expected = sphere::SphericalImage::point(rotated(o, 0, 0, 1));
+  for (auto names : {std::initializer_list<std::string>{"floor"},
+                     std::initializer_list<std::string>{"floor", "wall_x0", "wall_x1", "wall_y0",
+                                                        "wall_y1"}}) {
+    sphere::SphericalImage g = gvm_of(b, names);
+    EXPECT_TRUE(g == expected) << g.description();
+  }
+}
+
+TEST_P(Variants, StepFloorSeesALuneBetweenTheStepEdgeDirections) {
+  const auto o = GetParam();
+  Built b = build(test::step_part(o));
+  sphere::SphericalImage g = gvm_of(b, {"step_floor"});
+  // {u . z >= 0, u . x >= 0}: bounded by the half circle through +x and the one through +z.
+  ExactVec py = rotated(o, 0, 1, 0), my = rotated(o, 0, -1, 0);
+  sphere::Loop loop;
+  loop.arcs.push_back({my, py, rotated(o, 0, 0, 1)});
+  loop.arcs.push_back({py, my, rotated(o, 1, 0, 0)});
+  sphere::SphericalImage expected;
+  expected.add_face({{loop}, true});
+  EXPECT_TRUE(g == expected) << g.description();
+  EXPECT_NEAR(g.area(), 3.14159265358979323846, 1e-12);
+}
+
+TEST_P(Variants, ClosedTSlotLipUndersidesAreNeverVisible) {
+  const auto o = GetParam();
+  Built b = build(test::tslot_closed_part(o));
+  for (const char* lip : {"lip_underside_0", "lip_underside_1"}) {
+    sphere::SphericalImage g = gvm_of(b, {lip});
+    EXPECT_TRUE(g.is_empty()) << lip << ": " << g.description();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
+                         ::testing::Values(test::TestPartOptions{0, false, false},
+                                           test::TestPartOptions{1, false, false},
+                                           test::TestPartOptions{2, true, false}));
+
+}  // namespace
+}  // namespace gvm
