@@ -152,14 +152,16 @@ Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
 }
 
 bool is_zero(const ExactVec& a) {
+  const auto& v = node_of(a).approx;
+  bool undecided = false;
   for (int i = 0; i < 3; ++i) {
-    Sign s = filtered_sign([&](auto tag) {
-      using T = decltype(tag);
-      return eval<T>(a)[i];
-    });
-    if (s != Sign::kZero) return false;
+    auto s = v[i].sign();
+    if (s && *s != Sign::kZero) return false;
+    undecided |= !s;
   }
-  return true;
+  if (!undecided) return true;
+  auto e = eval<Dyadic>(a);  // one exact evaluation for all three coordinates
+  return e[0].is_zero() && e[1].is_zero() && e[2].is_zero();
 }
 
 bool parallel(const ExactVec& a, const ExactVec& b) { return is_zero(cross(a, b)); }

@@ -1,5 +1,7 @@
 #include "sphere/local_visibility_map.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -8,18 +10,40 @@ namespace {
 
 using exact::ExactVec;
 
+// Distinct directions in input order. Candidates for equality are found by sorting
+// certified unit estimates (a direction equals another only if their boxes overlap); the
+// exact test decides. Faces of one plane share a normal, so most inputs are duplicates.
 std::vector<ExactVec> distinct_directions(std::span<const ExactVec> normals) {
-  std::vector<ExactVec> out;
-  for (const ExactVec& n : normals) {
-    if (exact::is_zero(n)) continue;
-    bool seen = false;
-    for (const ExactVec& o : out) {
-      if (exact::same_direction(o, n)) {
-        seen = true;
-        break;
+  std::vector<size_t> live;
+  std::vector<exact::UnitEstimate> est(normals.size());
+  for (size_t i = 0; i < normals.size(); ++i) {
+    if (exact::is_zero(normals[i])) continue;
+    est[i] = exact::unit_estimate(normals[i]);
+    live.push_back(i);
+  }
+  std::vector<size_t> order = live;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return est[a].unit[0] - est[a].radius < est[b].unit[0] - est[b].radius;
+  });
+  std::vector<size_t> first(normals.size());
+  for (size_t i : live) first[i] = i;
+  for (size_t a = 0; a < order.size(); ++a) {
+    const size_t i = order[a];
+    if (first[i] != i) continue;  // already known to equal an earlier direction
+    for (size_t b = a + 1; b < order.size(); ++b) {
+      const size_t j = order[b];
+      if (est[j].unit[0] - est[j].radius > est[i].unit[0] + est[i].radius) break;
+      if (first[j] != j) continue;
+      bool overlap = std::fabs(est[i].unit[1] - est[j].unit[1]) <= est[i].radius + est[j].radius &&
+                     std::fabs(est[i].unit[2] - est[j].unit[2]) <= est[i].radius + est[j].radius;
+      if (overlap && exact::same_direction(normals[i], normals[j])) {
+        first[std::max(i, j)] = std::min(i, j);
       }
     }
-    if (!seen) out.push_back(n);
+  }
+  std::vector<ExactVec> out;
+  for (size_t i : live) {
+    if (first[i] == i) out.push_back(normals[i]);
   }
   return out;
 }
