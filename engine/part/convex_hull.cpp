@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <limits>
 #include <random>
+#include <unordered_set>
 
+#include "exact/filtered.h"
 #include "exact/predicates.h"
 
 namespace gvm::part {
@@ -89,6 +91,9 @@ class Builder {
     }
     for (size_t i = 1; i < deg.size(); ++i) deg[i] += deg[i - 1];
     hull.offset = deg;
+    hull.vertex_facet.assign(p_.size(), kNone);
+    for (uint32_t f = 0; f < hull.facets.size(); ++f)
+      for (uint32_t v : hull.facets[f]) hull.vertex_facet[v] = f;
     hull.adjacency.resize(deg.back());
     for (const Triangle& t : hull.facets)
       for (int i = 0; i < 3; ++i) hull.adjacency[deg[t[i]]++] = t[(i + 1) % 3];
@@ -182,23 +187,72 @@ ConvexHull convex_hull(std::span<const Point3> points, std::span<const uint32_t>
   return Builder(points).run(use);
 }
 
+namespace {
+
+// Sign of ((b - a) x (c - a)) . ((q1 - q0) x (q2 - q0)).
+Sign normal_dot(const Point3& a, const Point3& b, const Point3& c, const Point3& q0,
+                const Point3& q1, const Point3& q2) {
+  return exact::filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    auto cross = [](const Point3& o, const Point3& u, const Point3& w) {
+      T ux = T(u.x) - T(o.x), uy = T(u.y) - T(o.y), uz = T(u.z) - T(o.z);
+      T wx = T(w.x) - T(o.x), wy = T(w.y) - T(o.y), wz = T(w.z) - T(o.z);
+      return std::array<T, 3>{uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx};
+    };
+    auto n = cross(a, b, c);
+    auto m = cross(q0, q1, q2);
+    return n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+  });
+}
+
+}  // namespace
+
 uint32_t hull_extreme_vertex(const ConvexHull& hull, std::span<const Point3> points,
                              const Point3& a, const Point3& b, const Point3& c,
                              uint32_t start) {
+  // sign of ((b - a) x (c - a)) . (w - v)
+  auto gain = [&](uint32_t v, uint32_t w) {
+    return exact::det_diff(a, b, a, c, points[v], points[w]);
+  };
   uint32_t v = start;
-  for (bool moved = true; moved;) {
-    moved = false;
-    for (uint32_t k = hull.offset[v]; k < hull.offset[v + 1]; ++k) {
-      uint32_t w = hull.adjacency[k];
-      // sign of ((b - a) x (c - a)) . (w - v)
-      if (exact::det_diff(a, b, a, c, points[v], points[w]) == Sign::kPositive) {
-        v = w;
+  for (;;) {
+    bool moved = false, saw_less = false;
+    for (uint32_t k = hull.offset[v]; k < hull.offset[v + 1] && !moved; ++k) {
+      Sign s = gain(v, hull.adjacency[k]);
+      if (s == Sign::kPositive) {
+        v = hull.adjacency[k];
         moved = true;
-        break;
+      }
+      saw_less |= s == Sign::kNegative;
+    }
+    if (moved) continue;
+    // No improving neighbor. Unless every neighbor ties, v is an extreme point or lies on
+    // an edge of the polytope, where the neighbors span the tangent cone: v is optimal.
+    if (saw_less) return v;
+    // All neighbors tie: v is inside a flat face orthogonal to n, the maximal face when
+    // its outward normal agrees with n.
+    const Triangle& f = hull.facets[hull.vertex_facet[v]];
+    if (normal_dot(a, b, c, points[f[0]], points[f[1]], points[f[2]]) != Sign::kNegative)
+      return v;
+    // The minimal face: walk its vertices (all tie) to one with an improving neighbor.
+    std::vector<uint32_t> plateau{v};
+    std::unordered_set<uint32_t> seen{v};
+    uint32_t next = kNone;
+    for (size_t i = 0; i < plateau.size() && next == kNone; ++i) {
+      const uint32_t u = plateau[i];
+      for (uint32_t k = hull.offset[u]; k < hull.offset[u + 1]; ++k) {
+        const uint32_t w = hull.adjacency[k];
+        Sign s = gain(u, w);
+        if (s == Sign::kPositive) {
+          next = w;
+          break;
+        }
+        if (s == Sign::kZero && seen.insert(w).second) plateau.push_back(w);
       }
     }
+    if (next == kNone) return v;  // unreachable for a solid: the polytope is not flat
+    v = next;
   }
-  return v;
 }
 
 }  // namespace gvm::part

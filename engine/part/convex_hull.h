@@ -20,6 +20,8 @@ struct ConvexHull {
   // adjacency[offset[p] .. offset[p+1]); empty for points that are not hull vertices.
   std::vector<uint32_t> offset;
   std::vector<uint32_t> adjacency;
+  // One facet incident to each hull vertex (index into facets), kNone-like max otherwise.
+  std::vector<uint32_t> vertex_facet;
   uint32_t any_vertex = 0;
 };
 
@@ -29,8 +31,10 @@ ConvexHull convex_hull(std::span<const Point3> points, std::span<const uint32_t>
 
 // The point among the hull vertices maximizing the linear function x -> n . x with
 // n = (b - a) x (c - a), found by exact hill climbing on the hull graph from `start`
-// (a hull vertex). On a convex polytope a vertex without an improving neighbor is a
-// global maximum.
+// (a hull vertex). On a convex polytope an extreme vertex without an improving neighbor
+// is a global maximum; a hull vertex may also lie inside a flat face (it was extreme when
+// inserted), where all neighbors tie: if that face is the minimal one, the climb walks
+// the face's vertices to leave it.
 uint32_t hull_extreme_vertex(const ConvexHull& hull, std::span<const Point3> points,
                              const Point3& a, const Point3& b, const Point3& c,
                              uint32_t start);
