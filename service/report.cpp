@@ -20,6 +20,9 @@ std::string gvm_line(const v1::SphericalImage& gvm, const v1::SurfaceInfo& info)
       return "GVM = LVM(S + N_S) exactly (O_S is empty)";
     case v1::GVM_STATUS_EMPTY_VOID:
       return "GVM empty (faces of an internal void)";
+    case v1::GVM_STATUS_GLOBAL_OCCLUSION_COMPUTED:
+      return "GVM: " + map_line(gvm) + "  (#GOM " + std::to_string(info.envelope_border_arcs()) +
+             ", #Arrng " + std::to_string(info.arrangement_vertices()) + ")";
     case v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED:
       return "GVM not computed: global occlusion by O_S is not in this version; "
              "LVM(S + N_S) is an outer bound";

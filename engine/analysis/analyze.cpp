@@ -40,6 +40,8 @@ v1::GvmStatus to_proto(GvmKind kind) {
       return v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED;
     case GvmKind::kEmptyVoid:
       return v1::GVM_STATUS_EMPTY_VOID;
+    case GvmKind::kGlobalOcclusionComputed:
+      return v1::GVM_STATUS_GLOBAL_OCCLUSION_COMPUTED;
   }
   return v1::GVM_STATUS_UNSPECIFIED;
 }
@@ -58,6 +60,12 @@ void fill_surface(const SolidMesh& mesh, std::span<const uint32_t> triangles,
   info->set_potential_occluders(
       static_cast<uint32_t>(input_faces(mesh, vis.occluders.potential).size()));
   info->set_seconds(seconds);
+  if (vis.kind == GvmKind::kGlobalOcclusionComputed) {
+    info->set_envelope_border_arcs(vis.statistics.envelope.border_edges);
+    info->set_arrangement_vertices(vis.statistics.arrangement_vertices);
+    info->set_envelope_faces(vis.statistics.envelope.envelope_faces);
+    info->set_envelope_patches(vis.statistics.envelope.patches);
+  }
 }
 
 void fill_part_summary(const RawMesh& raw, const Part& part, v1::PartSummary* out) {
@@ -171,7 +179,8 @@ StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
                         for (size_t i = range.begin(); i != range.end(); ++i) {
                           if (progress.cancelled()) return;
                           auto ts = Clock::now();
-                          maps[i] = compute_surface_visibility(*part, surfaces[i]);
+                          maps[i] = compute_surface_visibility(*part, surfaces[i],
+                                                               request.options.global_occlusion());
                           surface_seconds[i] = seconds_since(ts);
                           progress.tick();
                         }

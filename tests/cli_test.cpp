@@ -1,0 +1,136 @@
+// The real `gvm` binary, run as a user would run it.
+#include <google/protobuf/util/json_util.h>
+#include <google/protobuf/util/message_differencer.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "gvm/v1/gvm.pb.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status = -1;
+  std::string out;  // stdout and stderr
+};
+
+CliRun run(const std::string& args) {
+  std::string cmd = std::string(GVM_CLI_PATH) + " " + args + " 2>&1";
+  CliRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.out.append(buf.data(), n);
+  int raw = pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return r;
+}
+
+std::string shared(const std::string& rel) { return std::string(GVM_SHARED_DIR) + "/" + rel; }
+
+fs::path temp_dir() {
+  fs::path dir = fs::temp_directory_path() / ("gvm_cli_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+gvm::v1::Analysis parse(const std::string& json) {
+  gvm::v1::Analysis a;
+  auto status = google::protobuf::util::JsonStringToMessage(json, &a);
+  EXPECT_TRUE(status.ok()) << status.ToString();
+  return a;
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Cli, HelpIsCompleteAndSucceeds) {
+  CliRun r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* word : {"analyze", "--groups", "--json", "--threads", "--feature-angle", "OFF",
+                           "STL", "PLY", "OBJ"}) {
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  }
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  EXPECT_EQ(run("").status, 2);
+  EXPECT_EQ(run("frobnicate").status, 2);
+  EXPECT_EQ(run("analyze").status, 2);
+  CliRun r = run("analyze part.stl --threads zero");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("--threads"), std::string::npos);
+}
+
+TEST(Cli, MissingAndBrokenPartsAreRejectedWithTheProblemNamed) {
+  CliRun missing = run("analyze /nonexistent/part.stl");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.out.find("/nonexistent/part.stl"), std::string::npos) << missing.out;
+
+  fs::path dir = temp_dir();
+  fs::path json = dir / "flipped.json";
+  CliRun flipped = run("analyze " + shared("data/bad/prusa_endstop-block_FLIPPED.off") + " --json " +
+                    json.string());
+  EXPECT_EQ(flipped.status, 1);
+  EXPECT_NE(flipped.out.find("inward"), std::string::npos) << flipped.out;
+  EXPECT_FALSE(fs::exists(json)) << "nothing may be written for a rejected part";
+
+  CliRun shared_edge = run("analyze " + shared("data/bad/trimesh_shared.STL"));
+  EXPECT_EQ(shared_edge.status, 1);
+  EXPECT_NE(shared_edge.out.find("non-manifold"), std::string::npos) << shared_edge.out;
+}
+
+TEST(Cli, ReportAndJsonOnARealPart) {
+  fs::path dir = temp_dir();
+  fs::path json = dir / "plug.json";
+  CliRun r = run("analyze " + shared("data/parts/prusa_plug-aligner.stl") + " --json " + json.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("Concave regions"), std::string::npos);
+  EXPECT_NE(r.out.find("LVM(S + N_S)"), std::string::npos);
+  gvm::v1::Analysis a = parse(read_file(json));
+  EXPECT_EQ(a.part().input_faces(), 48u);
+  EXPECT_GT(a.features_size(), 0);
+  // The field names other tools read are fixed.
+  std::string text = read_file(json);
+  for (const char* key : {"\"regions\"", "\"features\"", "\"faces\"", "\"lvm\"", "\"fullSphere\""}) {
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+  }
+  // Every face belongs to exactly one feature.
+  std::vector<int> seen(a.part().input_faces(), 0);
+  for (const auto& f : a.features()) {
+    for (uint32_t face : f.faces()) ++seen.at(face);
+  }
+  for (int count : seen) EXPECT_EQ(count, 1);
+}
+
+TEST(Cli, SameJsonWithOneAndTwoThreads) {
+  fs::path dir = temp_dir();
+  std::string part = shared("data/parts/trimesh_20mm-xyz-cube.stl");
+  ASSERT_EQ(run("analyze " + part + " -q --threads 1 --json " + (dir / "t1.json").string()).status, 0);
+  ASSERT_EQ(run("analyze " + part + " -q --threads 2 --json " + (dir / "t2.json").string()).status, 0);
+  gvm::v1::Analysis a = parse(read_file(dir / "t1.json"));
+  gvm::v1::Analysis b = parse(read_file(dir / "t2.json"));
+  // Timings are the only fields allowed to differ.
+  for (gvm::v1::Analysis* x : {&a, &b}) {
+    x->clear_timing();
+    for (auto& r : *x->mutable_regions()) r.mutable_info()->clear_seconds();
+    for (auto& f : *x->mutable_features()) f.mutable_info()->clear_seconds();
+  }
+  EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(a, b));
+  EXPECT_GT(a.features_size(), 1);
+}
+
+}  // namespace
