@@ -1,6 +1,7 @@
 #include "sphere/arrangement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
@@ -59,31 +60,62 @@ Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
   return box;
 }
 
-// Uniform grid over [-1, 1]^3 for candidate pairs; never decides anything by itself.
+// Uniform grid fitted to the boxes it indexes, for candidate pairs: cells are about the
+// size of a typical box, so clustered arcs (all directions from S to O lie in a narrow
+// cone) still spread over many cells. It never decides anything by itself.
 class Grid {
  public:
-  explicit Grid(size_t items) {
-    res_ = std::clamp(static_cast<int>(std::cbrt(static_cast<double>(items)) * 2), 2, 64);
+  explicit Grid(const std::vector<Box>& boxes) {
+    for (int i = 0; i < 3; ++i) lo_[i] = 2, hi_[i] = -2;
+    std::vector<double> extents;
+    for (const Box& b : boxes) {
+      for (int i = 0; i < 3; ++i) {
+        lo_[i] = std::min(lo_[i], b.lo[i]);
+        hi_[i] = std::max(hi_[i], b.hi[i]);
+      }
+      extents.push_back(std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]}));
+    }
+    double cell = 1;
+    if (!extents.empty()) {
+      std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+      cell = std::max(extents[extents.size() / 2], 1e-9);
+    }
+    for (int i = 0; i < 3; ++i) {
+      double span = std::max(hi_[i] - lo_[i], 1e-12);
+      res_[i] = std::clamp(static_cast<int>(span / cell) + 1, 1, 128);
+      scale_[i] = res_[i] / span;
+    }
+  }
+  // Cell coordinates of a point, clamped into the grid.
+  std::array<int, 3> cell_of(const double* p) const {
+    std::array<int, 3> c;
+    for (int i = 0; i < 3; ++i) {
+      c[i] = std::clamp(static_cast<int>(std::floor((p[i] - lo_[i]) * scale_[i])), 0, res_[i] - 1);
+    }
+    return c;
+  }
+  uint64_t key(const std::array<int, 3>& c) const {
+    return (uint64_t(c[0]) * res_[1] + c[1]) * res_[2] + c[2];
   }
   template <class F>
   void for_cells(const Box& b, F&& f) const {
-    int lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = cell(b.lo[i]);
-      hi[i] = cell(b.hi[i]);
-    }
+    auto lo = cell_of(b.lo), hi = cell_of(b.hi);
     for (int x = lo[0]; x <= hi[0]; ++x)
       for (int y = lo[1]; y <= hi[1]; ++y)
-        for (int z = lo[2]; z <= hi[2]; ++z) f((x * res_ + y) * res_ + z);
+        for (int z = lo[2]; z <= hi[2]; ++z) f(key({x, y, z}));
   }
-  size_t cells() const { return static_cast<size_t>(res_) * res_ * res_; }
 
  private:
-  int cell(double c) const {
-    return std::clamp(static_cast<int>(std::floor((c + 1) * 0.5 * res_)), 0, res_ - 1);
-  }
-  int res_;
+  double lo_[3], hi_[3], scale_[3];
+  int res_[3];
 };
+
+bool overlap(const Box& a, const Box& b) {
+  for (int i = 0; i < 3; ++i) {
+    if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -164,22 +196,30 @@ void Arrangement::build(std::span<const ArrangementArc> input,
     to_est[i] = exact::unit_estimate(arcs[i]->to);
     boxes[i] = arc_box(from_est[i], to_est[i]);
   }
-  Grid grid(arcs.size() + points.size());
-  std::vector<std::vector<uint32_t>> cells(grid.cells());
+  Grid grid(boxes);
+  std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
   for (uint32_t i = 0; i < arcs.size(); ++i) {
-    grid.for_cells(boxes[i], [&](size_t c) { cells[c].push_back(i); });
+    grid.for_cells(boxes[i], [&](uint64_t c) { cells[c].push_back(i); });
   }
-  std::vector<uint64_t> pairs;
-  for (const auto& cell : cells) {
-    for (size_t a = 0; a < cell.size(); ++a)
-      for (size_t b = a + 1; b < cell.size(); ++b)
-        pairs.push_back(uint64_t(std::min(cell[a], cell[b])) << 32 | std::max(cell[a], cell[b]));
+  // Each overlapping pair is examined once: in the cell holding the low corner of the
+  // intersection of its boxes.
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  for (const auto& [key, cell] : cells) {
+    for (size_t a = 0; a < cell.size(); ++a) {
+      for (size_t b = a + 1; b < cell.size(); ++b) {
+        const Box &ba = boxes[cell[a]], &bb = boxes[cell[b]];
+        if (!overlap(ba, bb)) continue;
+        double corner[3];
+        for (int k = 0; k < 3; ++k) corner[k] = std::max(ba.lo[k], bb.lo[k]);
+        if (grid.key(grid.cell_of(corner)) != key) continue;
+        pairs.emplace_back(std::min(cell[a], cell[b]), std::max(cell[a], cell[b]));
+      }
+    }
   }
+  // Deterministic processing order whatever the hash map's iteration order.
   std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
-  for (uint64_t pair : pairs) {
-    const uint32_t i = static_cast<uint32_t>(pair >> 32), j = static_cast<uint32_t>(pair);
+  for (auto [i, j] : pairs) {
     const ArrangementArc& A = *arcs[i];
     const ArrangementArc& B = *arcs[j];
     if (exact::parallel(A.normal, B.normal)) {
@@ -215,7 +255,10 @@ void Arrangement::build(std::span<const ArrangementArc> input,
     const ExactVec& p = k < points.size() ? points[k].p : reference;
     Box b = point_box(exact::unit_estimate(p));
     std::vector<uint32_t> near;
-    grid.for_cells(b, [&](size_t c) { near.insert(near.end(), cells[c].begin(), cells[c].end()); });
+    grid.for_cells(b, [&](uint64_t c) {
+      auto it = cells.find(c);
+      if (it != cells.end()) near.insert(near.end(), it->second.begin(), it->second.end());
+    });
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
     for (uint32_t i : near) {

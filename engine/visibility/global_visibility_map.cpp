@@ -1,5 +1,7 @@
 #include "visibility/global_visibility_map.h"
 
+#include <spdlog/spdlog.h>
+
 #include <array>
 
 #include "sphere/arrangement.h"
@@ -67,6 +69,11 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const EffectiveMinkowskiEnvelope eme =
       compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true);
 
+  spdlog::debug("global occlusion: |S| {} |O| {}: {} tentative, {} kept, {} envelope faces, {} "
+                "patches, {} border arcs",
+                s.size(), o.size(), eme.statistics.tentative_faces, eme.statistics.kept_faces,
+                eme.statistics.envelope_faces, eme.statistics.patches,
+                eme.statistics.border_edges);
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   add_lvm(lvm, arcs, points);
