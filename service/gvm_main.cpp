@@ -76,30 +76,29 @@ bool parse_number(const std::string& text, T& out) {
 std::optional<int> parse_analyze(const std::vector<std::string>& argv, Args& args) {
   for (size_t i = 0; i < argv.size(); ++i) {
     const std::string& a = argv[i];
-    auto value = [&](const char* name) -> std::optional<std::string> {
+    auto value = [&]() -> std::optional<std::string> {
       if (i + 1 >= argv.size()) return std::nullopt;
-      (void)name;
       return argv[++i];
     };
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       return 0;
     } else if (a == "--groups") {
-      auto v = value("--groups");
+      auto v = value();
       if (!v) return usage_error("--groups needs a FILE");
       args.groups = *v;
     } else if (a == "--json") {
-      auto v = value("--json");
+      auto v = value();
       if (!v) return usage_error("--json needs an output FILE");
       args.json = *v;
     } else if (a == "--threads") {
-      auto v = value("--threads");
+      auto v = value();
       if (!v || !parse_number(*v, args.threads) || args.threads == 0 || args.threads > 1024) {
         return usage_error("--threads needs a number from 1 to 1024");
       }
     } else if (a == "--feature-angle") {
       double deg = 0;
-      auto v = value("--feature-angle");
+      auto v = value();
       if (!v || !parse_number(*v, deg) || !(deg > 0 && deg < 180)) {
         return usage_error("--feature-angle needs an angle in degrees, 0 < DEG < 180");
       }

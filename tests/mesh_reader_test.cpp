@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "gvm/mesh.h"
-#include "mesh/raw_importer.h"
+#include "support/openmesh_recording_importer.h"
 
 namespace gvm {
 namespace {

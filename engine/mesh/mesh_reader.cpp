@@ -2,7 +2,7 @@
 // of the file.
 //
 // Why not OpenMesh's readers: measured with OpenMesh 9.0 through a recording importer
-// (mesh/raw_importer.h, see MeshReader.OpenMeshReadersDeliverFloatsOnly in
+// (tests/support/openmesh_recording_importer.h, see MeshReader.OpenMeshReadersDeliverFloatsOnly in
 // tests/mesh_reader_test.cpp), every reader -- ASCII OFF, OBJ, PLY (even with `property
 // double`) and ASCII STL -- hands the importer Vec3f, so 0.1 arrives as 0.100000001490116,
 // 1e-300 as 0 and 1e12 as 999999995904. The OBJ reader also silently drops faces with a

@@ -172,7 +172,14 @@ std::string fmt_coord(double x) {
 
 std::string fmt_vec(const ExactVec& v) {
   D3 u = v.unit();
-  return "(" + fmt_coord(u[0]) + ", " + fmt_coord(u[1]) + ", " + fmt_coord(u[2]) + ")";
+  std::string s = "(";  // appended piecewise: GCC 12 warns falsely on "(" + std::string
+  s += fmt_coord(u[0]);
+  s += ", ";
+  s += fmt_coord(u[1]);
+  s += ", ";
+  s += fmt_coord(u[2]);
+  s += ")";
+  return s;
 }
 
 std::string describe_face(const Face& f) {

@@ -45,9 +45,10 @@ StatusOr<RawMesh> read_raw_mesh(const std::string& path);
 
 // Checks the raw mesh and builds the solid. Fails with kInvalidArgument and a message
 // naming the file and the first offending face, edge or vertex (input numbering) when the
-// mesh is empty, has non-planar or non-convex polygons, zero-area or duplicate faces,
-// border edges, non-manifold edges or vertices, inconsistent or inward orientation, or
-// self-intersections.
+// mesh is empty, has non-planar or self-overlapping polygons, zero-area or duplicate
+// faces, border edges, non-manifold edges or vertices, inconsistent or inward orientation,
+// or self-intersections. Planar non-convex polygons are split into triangles (ear
+// clipping), every triangle keeping its input face.
 StatusOr<SolidMesh> build_solid(const RawMesh& raw);
 
 // read_raw_mesh + build_solid.
