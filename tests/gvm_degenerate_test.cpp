@@ -124,6 +124,75 @@ TEST_P(Variants, ClosedTSlotLipUndersidesAreNeverVisible) {
   }
 }
 
+// A face bounded by the minor arcs through the given vertices, counter-clockwise seen from
+// outside.
+sphere::Face polygon(const std::vector<ExactVec>& v, bool convex) {
+  sphere::Loop loop;
+  for (size_t k = 0; k < v.size(); ++k) {
+    const ExactVec& a = v[k];
+    const ExactVec& b = v[(k + 1) % v.size()];
+    loop.arcs.push_back({a, b, exact::cross(a, b)});
+  }
+  return {{loop}, convex};
+}
+
+TEST_P(Variants, DraftedPocketFloorSeesASphericalSquare) {
+  const auto o = GetParam();
+  Built b = build(test::drafted_pocket_part(o));
+  // Walls leaning out 1 in 4 have normals (+-4, 0, 1) and (0, +-4, 1); adjacent ones meet
+  // at the directions (+-1, +-1, 4), the corners of the floor's GVM.
+  sphere::SphericalImage expected;
+  expected.add_face(polygon({rotated(o, 1, 1, 4), rotated(o, -1, 1, 4), rotated(o, -1, -1, 4),
+                             rotated(o, 1, -1, 4)},
+                            true));
+  for (auto names : {std::initializer_list<std::string>{"floor"},
+                     std::initializer_list<std::string>{"floor", "wall_x0", "wall_x1", "wall_y0",
+                                                        "wall_y1"}}) {
+    sphere::SphericalImage g = gvm_of(b, names);
+    EXPECT_TRUE(g == expected) << g.description();
+    EXPECT_TRUE(g.contains(rotated(o, 0, 0, 1)));
+    EXPECT_FALSE(g.contains(rotated(o, 1, 0, 3)));
+  }
+}
+
+TEST_P(Variants, OpenTSlotLipUndersideSeesOutOfBothEnds) {
+  const auto o = GetParam();
+  Built b = build(test::tslot_open_part(o));
+  // Channel x in [3, 9], z in [2, 5], length 10 along y; lip 0 spans x in [3, 5] at z = 5.
+  // A ray from the far end of the lip leaves through the open end iff it descends at most
+  // 3 (floor edge) and moves at most 4 towards the far wall (from the lip tip) over 10:
+  // near +y the GVM is {u_x >= 0, u_z <= 0, 3 u_y + 10 u_z >= 0, 4 u_y - 10 u_x >= 0},
+  // the quadrilateral +y, (4, 10, 0), (4, 10, -3), (0, 10, -3); the same mirrored at -y.
+  sphere::SphericalImage expected;
+  expected.add_face(polygon({rotated(o, 0, 1, 0), rotated(o, 4, 10, 0), rotated(o, 4, 10, -3),
+                             rotated(o, 0, 10, -3)},
+                            false));
+  expected.add_face(polygon({rotated(o, 0, -1, 0), rotated(o, 0, -10, -3),
+                             rotated(o, 4, -10, -3), rotated(o, 4, -10, 0)},
+                            false));
+  sphere::SphericalImage g = gvm_of(b, {"lip_underside_0"});
+  EXPECT_TRUE(g == expected) << g.description();
+  EXPECT_EQ(g.faces().size(), 2u) << g.description();
+}
+
+TEST_P(Variants, TwoDisjointPocketsTogetherAndAFaceWithoutOccluders) {
+  const auto o = GetParam();
+  Built b = build(test::two_pockets_part(o));
+  auto s = test::triangles_of(b.part.mesh(), b.raw, {"floor_0", "floor_1"});
+  SurfaceVisibility vis = compute_surface_visibility(b.part, s, true);
+  ASSERT_TRUE(vis.gvm.has_value());
+  EXPECT_TRUE(*vis.gvm == sphere::SphericalImage::point(rotated(o, 0, 0, 1)))
+      << vis.gvm->description();
+  // The step floor has no potential occluders: its GVM is its LVM, exactly.
+  Built step = build(test::step_part(o));
+  auto floor = test::triangles_of(step.part.mesh(), step.raw, {"step_floor"});
+  SurfaceVisibility fv = compute_surface_visibility(step.part, floor, true);
+  EXPECT_EQ(fv.kind, GvmKind::kExactNoPotentialOccluders);
+  EXPECT_TRUE(fv.occluders.potential.empty());
+  ASSERT_TRUE(fv.gvm.has_value());
+  EXPECT_TRUE(*fv.gvm == fv.lvm);
+}
+
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},
