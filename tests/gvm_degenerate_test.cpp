@@ -196,7 +196,14 @@ TEST_P(Variants, TwoDisjointPocketsTogetherAndAFaceWithoutOccluders) {
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},
-                                           test::TestPartOptions{2, true, false}));
+                                           test::TestPartOptions{2, true, false}),
+                         [](const auto& info) {
+                           const test::TestPartOptions& o = info.param;
+                           return std::string(o.rotation == 0   ? "Axes"
+                                              : o.rotation == 1 ? "Rotated"
+                                                                : "RotatedTwice") +
+                                  (o.split ? "Split" : "");
+                         });
 
 }  // namespace
 }  // namespace gvm

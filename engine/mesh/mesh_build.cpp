@@ -29,22 +29,6 @@ int drop_axis(const Point3& a, const Point3& b, const Point3& c) {
   return -1;
 }
 
-// Proper intersection of closed 2D segments (touching included), in projection `drop`.
-bool seg_seg_2d(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop) {
-  Sign o1 = orient2d(a, b, c, drop), o2 = orient2d(a, b, d, drop);
-  Sign o3 = orient2d(c, d, a, drop), o4 = orient2d(c, d, b, drop);
-  if (o1 == Sign::kZero && o2 == Sign::kZero) {  // collinear: overlap of projections
-    int i = (drop + 1) % 3, j = (drop + 2) % 3;
-    for (int ax : {i, j}) {
-      double lo1 = std::min(a[ax], b[ax]), hi1 = std::max(a[ax], b[ax]);
-      double lo2 = std::min(c[ax], d[ax]), hi2 = std::max(c[ax], d[ax]);
-      if (hi1 < lo2 || hi2 < lo1) return false;
-    }
-    return true;
-  }
-  return o1 * o2 != Sign::kPositive && o3 * o4 != Sign::kPositive;
-}
-
 // Splits a planar simple polygon (vertex indices `f`) into triangles by ear clipping in
 // projection `drop`, where the polygon has orientation `s`. Returns false if the polygon is
 // not simple (self-overlapping) or cannot be clipped into non-degenerate triangles.
@@ -76,7 +60,7 @@ bool triangulate_polygon(const std::vector<Point3>& P, const std::vector<uint32_
       const Point3 &b0 = P[f[b]], &b1 = P[f[(b + 1) % n]];
       bool adjacent = (b == a + 1) || (a == 0 && b == n - 1);
       if (!adjacent) {
-        if (seg_seg_2d(a0, a1, b0, b1, drop)) return false;
+        if (mesh_internal::seg_seg_2d(a0, a1, b0, b1, drop)) return false;
       } else {
         // shared vertex v; fold-back when the other ends are collinear on the same ray
         const Point3& v = (b == a + 1) ? a1 : a0;

@@ -19,22 +19,6 @@ int drop_axis(const Point3& a, const Point3& b, const Point3& c) {
   return 2;
 }
 
-// Closed 2D segments in projection `drop` have a common point.
-bool seg_seg_2d(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop) {
-  Sign o1 = orient2d(a, b, c, drop), o2 = orient2d(a, b, d, drop);
-  Sign o3 = orient2d(c, d, a, drop), o4 = orient2d(c, d, b, drop);
-  if (o1 == kZ && o2 == kZ) {
-    // collinear in the projection (the segments lie on one line of the plane)
-    int i = (drop + 1) % 3, j = (drop + 2) % 3;
-    for (int ax : {i, j}) {
-      double lo1 = std::min(a[ax], b[ax]), hi1 = std::max(a[ax], b[ax]);
-      double lo2 = std::min(c[ax], d[ax]), hi2 = std::max(c[ax], d[ax]);
-      if (hi1 < lo2 || hi2 < lo1) return false;
-    }
-    return true;
-  }
-  return o1 * o2 != Sign::kPositive && o3 * o4 != Sign::kPositive;
-}
 
 // x in the closed triangle pqr (non-degenerate in projection `drop`).
 bool point_in_tri_2d(const Point3& x, const Point3& p, const Point3& q, const Point3& r,
@@ -51,6 +35,23 @@ bool mixed(Sign a, Sign b, Sign c) {
 }
 
 }  // namespace
+
+// Closed 2D segments in projection `drop` have a common point.
+bool seg_seg_2d(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop) {
+  Sign o1 = orient2d(a, b, c, drop), o2 = orient2d(a, b, d, drop);
+  Sign o3 = orient2d(c, d, a, drop), o4 = orient2d(c, d, b, drop);
+  if (o1 == kZ && o2 == kZ) {
+    // collinear in the projection (the segments lie on one line of the plane)
+    int i = (drop + 1) % 3, j = (drop + 2) % 3;
+    for (int ax : {i, j}) {
+      double lo1 = std::min(a[ax], b[ax]), hi1 = std::max(a[ax], b[ax]);
+      double lo2 = std::min(c[ax], d[ax]), hi2 = std::max(c[ax], d[ax]);
+      if (hi1 < lo2 || hi2 < lo1) return false;
+    }
+    return true;
+  }
+  return o1 * o2 != Sign::kPositive && o3 * o4 != Sign::kPositive;
+}
 
 bool segment_meets_triangle(const Point3& a, const Point3& b, const Point3& p, const Point3& q,
                             const Point3& r) {

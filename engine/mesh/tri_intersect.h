@@ -28,4 +28,7 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
     const std::vector<Point3>& P, const std::vector<Triangle>& tris,
     const std::vector<uint32_t>& tri_face);
 
+// Closed 2D segments ab and cd have a common point, in the projection dropping axis `drop`.
+bool seg_seg_2d(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int drop);
+
 }  // namespace gvm::mesh_internal
