@@ -1,8 +1,11 @@
 #include "visibility/effective_minkowski_envelope.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <tuple>
+
+#include <tbb/parallel_for.h>
 
 #include "exact/predicates.h"
 #include "visibility/surface_topology.h"
@@ -50,9 +53,9 @@ class Builder {
 
   // Adds a kept, back-facing face with vertices (q_i, p_i) counter-clockwise around its
   // outward normal.
-  void add_face(std::initializer_list<std::pair<uint32_t, uint32_t>> cycle) {
+  void add_face(std::span<const std::pair<uint32_t, uint32_t>> cycle) {
     const uint32_t face = faces_++;
-    const auto* v = cycle.begin();
+    const auto* v = cycle.data();
     const size_t n = cycle.size();
     for (size_t i = 0; i < n; ++i) {
       auto [q0, p0] = v[i];
@@ -110,6 +113,34 @@ class Builder {
   EffectiveMinkowskiEnvelope out_;
 };
 
+// Envelope faces found by one chunk of the enumeration, in enumeration order.
+struct Partial {
+  struct Face {
+    uint8_t n = 0;
+    std::array<std::pair<uint32_t, uint32_t>, 4> v;
+  };
+  std::vector<Face> faces;
+  uint64_t tentative = 0, kept = 0;
+  void add(std::initializer_list<std::pair<uint32_t, uint32_t>> cycle) {
+    Face f;
+    f.n = static_cast<uint8_t>(cycle.size());
+    std::copy(cycle.begin(), cycle.end(), f.v.begin());
+    faces.push_back(f);
+  }
+};
+
+// Runs body(i, partial) for i in [0, n) in parallel, in fixed chunks whose results are
+// kept in chunk order: the envelope does not depend on the thread count.
+template <class Body>
+void for_each_chunked(size_t n, std::vector<Partial>& out, const Body& body) {
+  constexpr size_t kChunk = 8;
+  const size_t chunks = (n + kChunk - 1) / kChunk, base = out.size();
+  out.resize(base + chunks);
+  tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
+    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) body(i, out[base + c]);
+  });
+}
+
 }  // namespace
 
 EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh& mesh,
@@ -118,57 +149,57 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
                                                                 bool keep_faces) {
   const SurfaceTopology ts(mesh, s), to(mesh, o);
   const auto& P = mesh.points;
-  EnvelopeStatistics stats;
-  Builder builder(keep_faces);
+  std::vector<Partial> parts;
 
   // VF: V_O + (-F_S). Normal n = (b - a) x (c - a) of F_S; the face (q-a, q-b, q-c) has
   // normal n; volume directions are O's edges at q.
-  for (uint32_t fs : s) {
-    const Triangle& f = mesh.triangles[fs];
+  for_each_chunked(s.size(), parts, [&](size_t si, Partial& out) {
+    const Triangle& f = mesh.triangles[s[si]];
     const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
     for (size_t i = 0; i < to.vertices().size(); ++i) {
       const uint32_t q = to.vertices()[i];
-      ++stats.tentative_faces;
+      ++out.tentative;
       CriticalSet crit;
       for (uint32_t w : to.neighbors(i)) {
         crit.add(exact::det_diff(a, b, a, c, P[q], P[w]));
         if (crit.mixed()) break;
       }
       if (crit.mixed()) continue;
-      ++stats.kept_faces;
+      ++out.kept;
       int orient = envelope_orientation(crit, exact::orient3d(a, b, c, P[q]));
-      if (orient > 0) builder.add_face({{q, f[0]}, {q, f[1]}, {q, f[2]}});
-      if (orient < 0) builder.add_face({{q, f[2]}, {q, f[1]}, {q, f[0]}});
+      if (orient > 0) out.add({{q, f[0]}, {q, f[1]}, {q, f[2]}});
+      if (orient < 0) out.add({{q, f[2]}, {q, f[1]}, {q, f[0]}});
     }
-  }
+  });
 
   // FV: F_O + (-V_S). Normal n of F_O; volume directions are -(w - p) for S's edges at p.
-  for (uint32_t fo : o) {
-    const Triangle& f = mesh.triangles[fo];
+  for_each_chunked(o.size(), parts, [&](size_t oi, Partial& out) {
+    const Triangle& f = mesh.triangles[o[oi]];
     const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
     for (size_t i = 0; i < ts.vertices().size(); ++i) {
       const uint32_t p = ts.vertices()[i];
-      ++stats.tentative_faces;
+      ++out.tentative;
       CriticalSet crit;
       for (uint32_t w : ts.neighbors(i)) {
         crit.add(exact::det_diff(a, b, a, c, P[w], P[p]));
         if (crit.mixed()) break;
       }
       if (crit.mixed()) continue;
-      ++stats.kept_faces;
+      ++out.kept;
       int orient = envelope_orientation(crit, exact::det_diff(a, b, a, c, P[p], a));
-      if (orient > 0) builder.add_face({{f[0], p}, {f[1], p}, {f[2], p}});
-      if (orient < 0) builder.add_face({{f[2], p}, {f[1], p}, {f[0], p}});
+      if (orient > 0) out.add({{f[0], p}, {f[1], p}, {f[2], p}});
+      if (orient < 0) out.add({{f[2], p}, {f[1], p}, {f[0], p}});
     }
-  }
+  });
 
   // EE: E_O + (-E_S), a parallelogram with normal n = (q1 - q0) x (p1 - p0); volume
   // directions are the inface directions of E_O in O and of -E_S in -S.
-  for (const auto& eo : to.edges()) {
+  for_each_chunked(to.edges().size(), parts, [&](size_t ei, Partial& out) {
+    const auto& eo = to.edges()[ei];
     const Point3 &q0 = P[eo.a], &q1 = P[eo.b];
     for (const auto& es : ts.edges()) {
       const Point3 &p0 = P[es.a], &p1 = P[es.b];
-      ++stats.tentative_faces;
+      ++out.tentative;
       CriticalSet crit;
       for (int k = 0; k < eo.face_count && !crit.mixed(); ++k) {
         crit.add(exact::det_diff(q0, q1, p0, p1, q0, P[eo.opposite[k]]));
@@ -179,12 +210,20 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
       if (crit.mixed()) continue;
       // Parallel edges give n = 0: every value, sigma included, is zero and the
       // "parallelogram" is a segment, dropped as tangent below.
-      ++stats.kept_faces;
+      ++out.kept;
       int orient = envelope_orientation(crit, exact::det_diff(q0, q1, p0, p1, p0, q0));
       // (q0-p0, q1-p0, q1-p1, q0-p1) runs counter-clockwise around -n.
-      if (orient < 0) builder.add_face({{eo.a, es.a}, {eo.b, es.a}, {eo.b, es.b}, {eo.a, es.b}});
-      if (orient > 0) builder.add_face({{eo.a, es.b}, {eo.b, es.b}, {eo.b, es.a}, {eo.a, es.a}});
+      if (orient < 0) out.add({{eo.a, es.a}, {eo.b, es.a}, {eo.b, es.b}, {eo.a, es.b}});
+      if (orient > 0) out.add({{eo.a, es.b}, {eo.b, es.b}, {eo.b, es.a}, {eo.a, es.a}});
     }
+  });
+
+  EnvelopeStatistics stats;
+  Builder builder(keep_faces);
+  for (const Partial& part : parts) {
+    stats.tentative_faces += part.tentative;
+    stats.kept_faces += part.kept;
+    for (const Partial::Face& f : part.faces) builder.add_face({f.v.data(), f.n});
   }
   return builder.finish(stats);
 }
