@@ -173,6 +173,10 @@ TEST_P(Variants, OpenTSlotLipUndersideSeesOutOfBothEnds) {
   sphere::SphericalImage g = gvm_of(b, {"lip_underside_0"});
   EXPECT_TRUE(g == expected) << g.description();
   EXPECT_EQ(g.faces().size(), 2u) << g.description();
+  EXPECT_TRUE(g.contains(rotated(o, 1, 10, -1)));   // inside the +y quadrilateral
+  EXPECT_TRUE(g.contains(rotated(o, 4, -10, -3)));  // a corner of the -y one
+  EXPECT_FALSE(g.contains(rotated(o, 1, 1, -1)));   // hits the floor
+  EXPECT_FALSE(g.contains(rotated(o, 5, 10, 0)));   // reaches the far wall first
 }
 
 TEST_P(Variants, TwoDisjointPocketsTogetherAndAFaceWithoutOccluders) {

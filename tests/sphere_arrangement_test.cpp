@@ -62,6 +62,20 @@ TEST(SphereArrangement, UnionAndIntersectionOfOverlappingSquares) {
   EXPECT_EQ(both.faces()[0].loops[0].arcs.size(), 4u);
   // Nothing is covered three times, and the reference face is outside.
   EXPECT_TRUE(at_least(arr, 3).is_empty());
+  // Exact membership in the non-convex union, boundary points included.
+  SphericalImage ca = convex_polygon(a), cb = convex_polygon(b);
+  int inside = 0;
+  for (int x = -6; x <= 6; ++x) {
+    for (int y = -6; y <= 6; ++y) {
+      for (double z : {8.0, 5.0, -8.0}) {
+        ExactVec u = v(x, y, z);
+        bool expected = ca.contains(u) || cb.contains(u);
+        ASSERT_EQ(uni.contains(u), expected) << x << " " << y << " " << z;
+        inside += expected;
+      }
+    }
+  }
+  EXPECT_GT(inside, 30);
 }
 
 TEST(SphereArrangement, CollinearEdgesAndAHoleAndSeparateComponents) {

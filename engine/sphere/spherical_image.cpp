@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 #include "gvm/v1/gvm.pb.h"
+#include "sphere/point_in_face.h"
 
 namespace gvm::sphere {
 namespace {
@@ -30,9 +30,7 @@ ExactVec point_on_circle(const ExactVec& c) {
 }
 
 bool face_contains(const Face& f, const ExactVec& u) {
-  if (!f.convex) {
-    throw std::logic_error("SphericalImage: containment in non-convex faces is not implemented");
-  }
+  if (!f.convex) return point_in_face(f, u);
   for (const Loop& l : f.loops) {
     for (const Arc& a : l.arcs) {
       if (!nonneg(exact::sign_dot(u, a.normal))) return false;
