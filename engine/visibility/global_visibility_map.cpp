@@ -5,6 +5,7 @@
 #include <array>
 
 #include "sphere/arrangement.h"
+#include "visibility/occluder_beam.h"
 
 namespace gvm {
 namespace {
@@ -66,12 +67,15 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
                                              const sphere::SphericalImage& lvm,
                                              GlobalOcclusionStatistics* stats) {
   if (lvm.is_empty() || o.empty()) return lvm;
+  const std::vector<uint32_t> beam = occluders_in_beam(mesh, s, o, lvm);
+  if (stats) stats->occluders_in_beam = beam.size();
+  if (beam.empty()) return lvm;
   const EffectiveMinkowskiEnvelope eme =
-      compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true);
+      compute_effective_minkowski_envelope(mesh, s, beam, /*keep_faces=*/true);
 
-  spdlog::debug("global occlusion: |S| {} |O| {}: {} tentative, {} kept, {} envelope faces, {} "
+  spdlog::debug("global occlusion: |S| {} |O| {} ({} in the beam): {} tentative, {} kept, {} envelope faces, {} "
                 "patches, {} border arcs",
-                s.size(), o.size(), eme.statistics.tentative_faces, eme.statistics.kept_faces,
+                s.size(), o.size(), beam.size(), eme.statistics.tentative_faces, eme.statistics.kept_faces,
                 eme.statistics.envelope_faces, eme.statistics.patches,
                 eme.statistics.border_edges);
   std::vector<ArrangementArc> arcs;

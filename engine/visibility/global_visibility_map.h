@@ -14,6 +14,7 @@
 namespace gvm {
 
 struct GlobalOcclusionStatistics {
+  uint64_t occluders_in_beam = 0;     // faces of O_S that can meet S near the LVM
   EnvelopeStatistics envelope;
   uint64_t arrangement_vertices = 0;  // #Arrng in the paper's tables
   uint64_t arrangement_edges = 0;
