@@ -60,7 +60,7 @@ void fill_surface(const SolidMesh& mesh, std::span<const uint32_t> triangles,
   info->set_potential_occluders(
       static_cast<uint32_t>(input_faces(mesh, vis.occluders.potential).size()));
   info->set_seconds(seconds);
-  if (vis.kind == GvmKind::kGlobalOcclusionComputed) {
+  if (vis.statistics.envelope.tentative_faces > 0) {  // the envelope was computed
     info->set_envelope_border_arcs(vis.statistics.envelope.border_edges);
     info->set_arrangement_vertices(vis.statistics.arrangement_vertices);
     info->set_envelope_faces(vis.statistics.envelope.envelope_faces);

@@ -62,10 +62,10 @@ ExactVec generic_direction(const std::vector<ExactVec>& circles,
 
 }  // namespace
 
-sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
-                                             std::span<const uint32_t> o,
-                                             const sphere::SphericalImage& lvm,
-                                             GlobalOcclusionStatistics* stats) {
+std::optional<sphere::SphericalImage> global_visibility_map(
+    const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o,
+    const sphere::SphericalImage& lvm, GlobalOcclusionStatistics* stats,
+    size_t max_border_arcs) {
   if (lvm.is_empty() || o.empty()) return lvm;
   const std::vector<uint32_t> beam = occluders_in_beam(mesh, s, o, lvm);
   if (stats) stats->occluders_in_beam = beam.size();
@@ -78,6 +78,8 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
                 s.size(), o.size(), beam.size(), eme.statistics.tentative_faces, eme.statistics.kept_faces,
                 eme.statistics.envelope_faces, eme.statistics.patches,
                 eme.statistics.border_edges);
+  if (stats) stats->envelope = eme.statistics;
+  if (eme.border.size() > max_border_arcs) return std::nullopt;
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   add_lvm(lvm, arcs, points);
@@ -138,7 +140,6 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   };
   sphere::SphericalImage gvm = arr.extract(face_in, edge_in, vertex_in);
   if (stats) {
-    stats->envelope = eme.statistics;
     stats->arrangement_vertices = arr.vertices().size();
     stats->arrangement_edges = arr.edges().size();
     stats->arrangement_faces = faces.size();

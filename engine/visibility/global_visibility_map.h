@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "gvm/mesh.h"
@@ -21,9 +22,11 @@ struct GlobalOcclusionStatistics {
   uint64_t arrangement_faces = 0;
 };
 
-sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
-                                             std::span<const uint32_t> o,
-                                             const sphere::SphericalImage& lvm,
-                                             GlobalOcclusionStatistics* stats = nullptr);
+// Nothing when the envelope's border has more than `max_border_arcs` arcs: its
+// arrangement would take too long (see the README); the caller keeps the LVM as a bound.
+std::optional<sphere::SphericalImage> global_visibility_map(
+    const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o,
+    const sphere::SphericalImage& lvm, GlobalOcclusionStatistics* stats = nullptr,
+    size_t max_border_arcs = 4000);
 
 }  // namespace gvm
