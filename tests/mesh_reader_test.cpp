@@ -9,16 +9,14 @@
 #include <fstream>
 
 #include "gvm/mesh.h"
+#include "support/assertions.h"
 #include "support/openmesh_recording_importer.h"
 
 namespace gvm {
 namespace {
 
 namespace fs = std::filesystem;
-::testing::AssertionResult Has(const std::string& msg, const std::string& sub) {
-  if (msg.find(sub) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << msg << "' does not contain '" << sub << "'";
-}
+using test::Has;
 
 fs::path temp_dir() {
   fs::path d = fs::temp_directory_path() / ("gvm_mesh_reader_" + std::to_string(::getpid()));

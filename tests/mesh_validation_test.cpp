@@ -6,6 +6,7 @@
 #include <map>
 
 #include "gvm/mesh.h"
+#include "support/assertions.h"
 #include "mesh/tri_intersect.h"
 
 namespace gvm {
@@ -13,10 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-::testing::AssertionResult Has(const std::string& msg, const std::string& sub) {
-  if (msg.find(sub) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << msg << "' does not contain '" << sub << "'";
-}
+using test::Has;
 
 // ------------------------------------------------------------------ shared data
 
