@@ -70,6 +70,30 @@ V3<T> eval(const ExactVec& v) {
   return node_of(v).eval<T>();
 }
 
+// Facts known from how vectors were built, which decide the zero cases that are common
+// in arrangements (an arc's endpoint against its own circle, a vertex against the circles
+// it was cut from) without any arithmetic: the same node up to negation is parallel, a
+// factor of a cross product is orthogonal to it.
+const ExactVec::Node* peel(const ExactVec::Node* n) {
+  while (n && n->op == Op::kNeg) n = n->a.get();
+  return n;
+}
+
+bool same_node(const ExactVec& a, const ExactVec& b) {
+  const ExactVec::Node* x = peel(a.node());
+  return x && x == peel(b.node());
+}
+
+bool factor_of(const ExactVec::Node* x, const ExactVec::Node* c) {
+  c = peel(c);
+  return x && c && c->op == Op::kCross && (peel(c->a.get()) == x || peel(c->b.get()) == x);
+}
+
+bool orthogonal_by_construction(const ExactVec& a, const ExactVec& b) {
+  const ExactVec::Node *x = peel(a.node()), *y = peel(b.node());
+  return factor_of(x, y) || factor_of(y, x);
+}
+
 }  // namespace
 
 ExactVec ExactVec::from_point(const Point3& p) {
@@ -135,6 +159,7 @@ ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c) {
 }
 
 Sign sign_dot(const ExactVec& a, const ExactVec& b) {
+  if (orthogonal_by_construction(a, b)) return Sign::kZero;
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
     auto x = eval<T>(a), y = eval<T>(b);
@@ -143,6 +168,7 @@ Sign sign_dot(const ExactVec& a, const ExactVec& b) {
 }
 
 Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
+  if (same_node(a, b) || same_node(b, c) || same_node(a, c)) return Sign::kZero;
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
     auto x = eval<T>(a), y = eval<T>(b), z = eval<T>(c);
@@ -152,6 +178,8 @@ Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
 }
 
 bool is_zero(const ExactVec& a) {
+  const ExactVec::Node* n = peel(a.node());
+  if (n && n->op == Op::kCross && peel(n->a.get()) == peel(n->b.get())) return true;
   const auto& v = node_of(a).approx;
   bool undecided = false;
   for (int i = 0; i < 3; ++i) {

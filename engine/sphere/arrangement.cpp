@@ -1,5 +1,7 @@
 #include "sphere/arrangement.h"
 
+#include "sphere/box_tree.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -32,10 +34,6 @@ class UnionFind {
   std::vector<uint32_t> parent_;
 };
 
-struct Box {
-  double lo[3], hi[3];
-};
-
 Box point_box(const exact::UnitEstimate& e) {
   Box b;
   for (int i = 0; i < 3; ++i) {
@@ -60,63 +58,6 @@ Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
   return box;
 }
 
-// Uniform grid fitted to the boxes it indexes, for candidate pairs: cells are about the
-// size of a typical box, so clustered arcs (all directions from S to O lie in a narrow
-// cone) still spread over many cells. It never decides anything by itself.
-class Grid {
- public:
-  explicit Grid(const std::vector<Box>& boxes) {
-    for (int i = 0; i < 3; ++i) lo_[i] = 2, hi_[i] = -2;
-    std::vector<double> extents;
-    for (const Box& b : boxes) {
-      for (int i = 0; i < 3; ++i) {
-        lo_[i] = std::min(lo_[i], b.lo[i]);
-        hi_[i] = std::max(hi_[i], b.hi[i]);
-      }
-      extents.push_back(std::max({b.hi[0] - b.lo[0], b.hi[1] - b.lo[1], b.hi[2] - b.lo[2]}));
-    }
-    double cell = 1;
-    if (!extents.empty()) {
-      std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-      cell = std::max(extents[extents.size() / 2], 1e-9);
-    }
-    for (int i = 0; i < 3; ++i) {
-      double span = std::max(hi_[i] - lo_[i], 1e-12);
-      res_[i] = std::clamp(static_cast<int>(span / cell) + 1, 1, 128);
-      scale_[i] = res_[i] / span;
-    }
-  }
-  // Cell coordinates of a point, clamped into the grid.
-  std::array<int, 3> cell_of(const double* p) const {
-    std::array<int, 3> c;
-    for (int i = 0; i < 3; ++i) {
-      c[i] = std::clamp(static_cast<int>(std::floor((p[i] - lo_[i]) * scale_[i])), 0, res_[i] - 1);
-    }
-    return c;
-  }
-  uint64_t key(const std::array<int, 3>& c) const {
-    return (uint64_t(c[0]) * res_[1] + c[1]) * res_[2] + c[2];
-  }
-  template <class F>
-  void for_cells(const Box& b, F&& f) const {
-    auto lo = cell_of(b.lo), hi = cell_of(b.hi);
-    for (int x = lo[0]; x <= hi[0]; ++x)
-      for (int y = lo[1]; y <= hi[1]; ++y)
-        for (int z = lo[2]; z <= hi[2]; ++z) f(key({x, y, z}));
-  }
-
- private:
-  double lo_[3], hi_[3], scale_[3];
-  int res_[3];
-};
-
-bool overlap(const Box& a, const Box& b) {
-  for (int i = 0; i < 3; ++i) {
-    if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 Arrangement::Arrangement(std::span<const ArrangementArc> arcs,
@@ -131,21 +72,33 @@ Arrangement::Arrangement(std::span<const ArrangementArc> arcs,
   const uint32_t root = uf.find(reference_vertex_ == 0 && vertices_.size() > 1 ? 1 : 0);
   std::vector<exact::UnitEstimate> est;
   for (const Vertex& v : vertices_) est.push_back(exact::unit_estimate(v.p));
+  // Vertices of the root component (never the reference point), to bridge to.
+  std::vector<uint32_t> targets;
+  std::vector<Box> target_boxes;
+  for (uint32_t w = 0; w < vertices_.size(); ++w) {
+    if (w == reference_vertex_ || uf.find(w) != root) continue;
+    targets.push_back(w);
+    target_boxes.push_back(point_box(est[w]));
+  }
+  const BoxTree target_tree(target_boxes);
   std::vector<bool> done(vertices_.size(), false);
   for (uint32_t v = 0; v < vertices_.size(); ++v) {
     uint32_t c = uf.find(v);
-    if (c == root || done[c]) continue;
+    if (c == root || done[c] || targets.empty()) continue;
     done[c] = true;
-    // The nearest vertex of the root component (never the reference point).
+    // A near vertex of the root component: short bridges cross few arcs. Any one would do.
     uint32_t best = UINT32_MAX;
     double best_d = 1e300;
-    for (uint32_t w = 0; w < vertices_.size(); ++w) {
-      if (w == reference_vertex_ || uf.find(w) != root) continue;
-      double d = 0;
-      for (int i = 0; i < 3; ++i) d += (est[v].unit[i] - est[w].unit[i]) * (est[v].unit[i] - est[w].unit[i]);
-      if (d < best_d) best_d = d, best = w;
+    for (double h = 1e-3; best == UINT32_MAX; h *= 4) {
+      Box query;
+      for (int i = 0; i < 3; ++i) query.lo[i] = est[v].unit[i] - h, query.hi[i] = est[v].unit[i] + h;
+      for (uint32_t t : target_tree.overlapping(query)) {
+        const uint32_t w = targets[t];
+        double d = 0;
+        for (int i = 0; i < 3; ++i) d += (est[v].unit[i] - est[w].unit[i]) * (est[v].unit[i] - est[w].unit[i]);
+        if (d < best_d) best_d = d, best = w;
+      }
     }
-    if (best == UINT32_MAX) continue;
     const ExactVec& a = vertices_[v].p;
     const ExactVec& b = vertices_[best].p;
     if (exact::parallel(a, b)) {
@@ -188,7 +141,7 @@ void Arrangement::build(std::span<const ArrangementArc> input,
   for (const ArrangementPoint& p : points) point_occ.push_back(add_occ(p.p));
   const uint32_t reference_occ = add_occ(reference);
 
-  // Candidate pairs from a grid of boxes.
+  // Candidate pairs from a tree of boxes.
   std::vector<exact::UnitEstimate> from_est(arcs.size()), to_est(arcs.size());
   std::vector<Box> boxes(arcs.size());
   for (size_t i = 0; i < arcs.size(); ++i) {
@@ -196,28 +149,8 @@ void Arrangement::build(std::span<const ArrangementArc> input,
     to_est[i] = exact::unit_estimate(arcs[i]->to);
     boxes[i] = arc_box(from_est[i], to_est[i]);
   }
-  Grid grid(boxes);
-  std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
-  for (uint32_t i = 0; i < arcs.size(); ++i) {
-    grid.for_cells(boxes[i], [&](uint64_t c) { cells[c].push_back(i); });
-  }
-  // Each overlapping pair is examined once: in the cell holding the low corner of the
-  // intersection of its boxes.
-  std::vector<std::pair<uint32_t, uint32_t>> pairs;
-  for (const auto& [key, cell] : cells) {
-    for (size_t a = 0; a < cell.size(); ++a) {
-      for (size_t b = a + 1; b < cell.size(); ++b) {
-        const Box &ba = boxes[cell[a]], &bb = boxes[cell[b]];
-        if (!overlap(ba, bb)) continue;
-        double corner[3];
-        for (int k = 0; k < 3; ++k) corner[k] = std::max(ba.lo[k], bb.lo[k]);
-        if (grid.key(grid.cell_of(corner)) != key) continue;
-        pairs.emplace_back(std::min(cell[a], cell[b]), std::max(cell[a], cell[b]));
-      }
-    }
-  }
-  // Deterministic processing order whatever the hash map's iteration order.
-  std::sort(pairs.begin(), pairs.end());
+  const BoxTree tree(boxes);
+  const std::vector<std::pair<uint32_t, uint32_t>> pairs = tree.overlapping_pairs();
 
   for (auto [i, j] : pairs) {
     const ArrangementArc& A = *arcs[i];
@@ -254,43 +187,19 @@ void Arrangement::build(std::span<const ArrangementArc> input,
   for (size_t k = 0; k <= points.size(); ++k) {
     const ExactVec& p = k < points.size() ? points[k].p : reference;
     Box b = point_box(exact::unit_estimate(p));
-    std::vector<uint32_t> near;
-    grid.for_cells(b, [&](uint64_t c) {
-      auto it = cells.find(c);
-      if (it != cells.end()) near.insert(near.end(), it->second.begin(), it->second.end());
-    });
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    for (uint32_t i : near) {
+    for (uint32_t i : tree.overlapping(b)) {
       if (exact::sign_dot(p, arcs[i]->normal) == Sign::kZero && strictly_inside(*arcs[i], p)) {
         on_arc[i].push_back(k < points.size() ? point_occ[k] : reference_occ);
       }
     }
   }
 
-  // Identify equal directions: sweep over boxes sorted by their low x, exact tests.
-  std::vector<exact::UnitEstimate> est(occ.size());
-  for (size_t k = 0; k < occ.size(); ++k) est[k] = exact::unit_estimate(occ[k]);
-  std::vector<uint32_t> order(occ.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    return est[a].unit[0] - est[a].radius < est[b].unit[0] - est[b].radius;
-  });
+  // Identify equal directions: candidate pairs of overlapping boxes, exact tests.
+  std::vector<Box> occ_boxes(occ.size());
+  for (size_t k = 0; k < occ.size(); ++k) occ_boxes[k] = point_box(exact::unit_estimate(occ[k]));
   UnionFind same(occ.size());
-  for (size_t a = 0; a < order.size(); ++a) {
-    const auto& ea = est[order[a]];
-    for (size_t b = a + 1; b < order.size(); ++b) {
-      const auto& eb = est[order[b]];
-      if (eb.unit[0] - eb.radius > ea.unit[0] + ea.radius) break;
-      bool overlap = true;
-      for (int i = 1; i < 3 && overlap; ++i) {
-        overlap = std::fabs(ea.unit[i] - eb.unit[i]) <= ea.radius + eb.radius;
-      }
-      if (overlap && same.find(order[a]) != same.find(order[b]) &&
-          exact::same_direction(occ[order[a]], occ[order[b]])) {
-        same.unite(order[a], order[b]);
-      }
-    }
+  for (auto [a, b] : BoxTree(occ_boxes).overlapping_pairs()) {
+    if (same.find(a) != same.find(b) && exact::same_direction(occ[a], occ[b])) same.unite(a, b);
   }
   std::vector<uint32_t> vertex_of(occ.size(), UINT32_MAX), vertex_of_root(occ.size(), UINT32_MAX);
   for (uint32_t k = 0; k < occ.size(); ++k) {

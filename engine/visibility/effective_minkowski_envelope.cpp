@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "exact/predicates.h"
+#include "visibility/direction_window.h"
 #include "visibility/surface_topology.h"
 
 namespace gvm {
@@ -120,7 +121,7 @@ struct Partial {
     std::array<std::pair<uint32_t, uint32_t>, 4> v;
   };
   std::vector<Face> faces;
-  uint64_t tentative = 0, kept = 0;
+  uint64_t tentative = 0, outside_window = 0, kept = 0;
   void add(std::initializer_list<std::pair<uint32_t, uint32_t>> cycle) {
     Face f;
     f.n = static_cast<uint8_t>(cycle.size());
@@ -141,24 +142,82 @@ void for_each_chunked(size_t n, std::vector<Partial>& out, const Body& body) {
   });
 }
 
+// The window's values at the points of O and S, and the extremes over faces and edges,
+// so that the test of one tentative face is a few comparisons.
+class WindowValues {
+ public:
+  WindowValues(const DirectionWindow* window, const SolidMesh& mesh)
+      : window_(window), mesh_(mesh), k_(window ? window->size() : 0) {}
+
+  bool active() const { return k_ > 0; }
+  // Values at each vertex of a point list.
+  std::vector<double> at(std::span<const uint32_t> points) const {
+    std::vector<double> out(points.size() * k_);
+    if (!active()) return out;
+    for (size_t i = 0; i < points.size(); ++i) window_->values(mesh_.points[points[i]], &out[i * k_]);
+    return out;
+  }
+  // Extremes (max when `largest`, else min) over the given points, into out[0..k).
+  void extreme(std::initializer_list<uint32_t> points, bool largest, double* out) const {
+    std::vector<double> v(k_);
+    bool first = true;
+    for (uint32_t p : points) {
+      window_->values(mesh_.points[p], v.data());
+      for (size_t k = 0; k < k_; ++k) {
+        out[k] = first ? v[k] : (largest ? std::max(out[k], v[k]) : std::min(out[k], v[k]));
+      }
+      first = false;
+    }
+  }
+  bool may_meet(const double* q_max, const double* p_min) const {
+    return window_->may_meet(q_max, p_min);
+  }
+  size_t size() const { return k_; }
+
+ private:
+  const DirectionWindow* window_;
+  const SolidMesh& mesh_;
+  size_t k_;
+};
+
 }  // namespace
+
+std::vector<EnvelopeBorderEdge> border_chain(std::span<const EnvelopeFace> faces) {
+  Builder builder(/*keep_faces=*/false);
+  for (const EnvelopeFace& f : faces) builder.add_face(f.vertices);
+  return builder.finish({}).border;
+}
 
 EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh& mesh,
                                                                 std::span<const uint32_t> s,
                                                                 std::span<const uint32_t> o,
-                                                                bool keep_faces) {
+                                                                bool keep_faces,
+                                                                const DirectionWindow* window) {
   const SurfaceTopology ts(mesh, s), to(mesh, o);
   const auto& P = mesh.points;
   std::vector<Partial> parts;
+  const WindowValues win(window, mesh);
+  const size_t K = win.size();
+  const std::vector<double> o_vertex = win.at(to.vertices()), s_vertex = win.at(ts.vertices());
+  std::vector<double> s_edge_min(ts.edges().size() * K);
+  for (size_t i = 0; i < ts.edges().size() && win.active(); ++i) {
+    win.extreme({ts.edges()[i].a, ts.edges()[i].b}, false, &s_edge_min[i * K]);
+  }
 
   // VF: V_O + (-F_S). Normal n = (b - a) x (c - a) of F_S; the face (q-a, q-b, q-c) has
   // normal n; volume directions are O's edges at q.
   for_each_chunked(s.size(), parts, [&](size_t si, Partial& out) {
     const Triangle& f = mesh.triangles[s[si]];
     const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
+    std::vector<double> p_min(K);
+    if (win.active()) win.extreme({f[0], f[1], f[2]}, false, p_min.data());
     for (size_t i = 0; i < to.vertices().size(); ++i) {
       const uint32_t q = to.vertices()[i];
       ++out.tentative;
+      if (win.active() && !win.may_meet(&o_vertex[i * K], p_min.data())) {
+        ++out.outside_window;
+        continue;
+      }
       CriticalSet crit;
       for (uint32_t w : to.neighbors(i)) {
         crit.add(exact::det_diff(a, b, a, c, P[q], P[w]));
@@ -176,9 +235,15 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   for_each_chunked(o.size(), parts, [&](size_t oi, Partial& out) {
     const Triangle& f = mesh.triangles[o[oi]];
     const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
+    std::vector<double> q_max(K);
+    if (win.active()) win.extreme({f[0], f[1], f[2]}, true, q_max.data());
     for (size_t i = 0; i < ts.vertices().size(); ++i) {
       const uint32_t p = ts.vertices()[i];
       ++out.tentative;
+      if (win.active() && !win.may_meet(q_max.data(), &s_vertex[i * K])) {
+        ++out.outside_window;
+        continue;
+      }
       CriticalSet crit;
       for (uint32_t w : ts.neighbors(i)) {
         crit.add(exact::det_diff(a, b, a, c, P[w], P[p]));
@@ -197,9 +262,16 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   for_each_chunked(to.edges().size(), parts, [&](size_t ei, Partial& out) {
     const auto& eo = to.edges()[ei];
     const Point3 &q0 = P[eo.a], &q1 = P[eo.b];
-    for (const auto& es : ts.edges()) {
+    std::vector<double> q_max(K);
+    if (win.active()) win.extreme({eo.a, eo.b}, true, q_max.data());
+    for (size_t j = 0; j < ts.edges().size(); ++j) {
+      const auto& es = ts.edges()[j];
       const Point3 &p0 = P[es.a], &p1 = P[es.b];
       ++out.tentative;
+      if (win.active() && !win.may_meet(q_max.data(), &s_edge_min[j * K])) {
+        ++out.outside_window;
+        continue;
+      }
       CriticalSet crit;
       for (int k = 0; k < eo.face_count && !crit.mixed(); ++k) {
         crit.add(exact::det_diff(q0, q1, p0, p1, q0, P[eo.opposite[k]]));
@@ -223,6 +295,7 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   for (const Partial& part : parts) {
     stats.tentative_faces += part.tentative;
     stats.kept_faces += part.kept;
+    stats.outside_window += part.outside_window;
     for (const Partial::Face& f : part.faces) builder.add_face({f.v.data(), f.n});
   }
   return builder.finish(stats);

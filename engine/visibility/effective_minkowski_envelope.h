@@ -33,6 +33,7 @@ struct EnvelopeBorderEdge {
 
 struct EnvelopeStatistics {
   uint64_t tentative_faces = 0;   // VF + FV + EE pairs examined
+  uint64_t outside_window = 0;    // of those, left out: their directions miss the window
   uint64_t kept_faces = 0;        // critical set not {+,-}
   uint64_t envelope_faces = 0;    // kept and back-facing to the origin
   uint64_t patches = 0;           // maximal edge-connected sets of envelope faces
@@ -51,9 +52,16 @@ struct EffectiveMinkowskiEnvelope {
   std::vector<EnvelopeFace> faces;         // only with keep_faces
 };
 
-// S and O: disjoint sets of triangles of `mesh` (they may touch).
+class DirectionWindow;
+
+// The border chain of any set of envelope faces: their edges with shared ones cancelled.
+std::vector<EnvelopeBorderEdge> border_chain(std::span<const EnvelopeFace> faces);
+
+// S and O: disjoint sets of triangles of `mesh` (they may touch). With a window, the
+// faces whose directions certainly miss it are left out (see direction_window.h): the
+// result then describes the coverage near the window's directions only.
 EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(
     const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o,
-    bool keep_faces = false);
+    bool keep_faces = false, const DirectionWindow* window = nullptr);
 
 }  // namespace gvm

@@ -2,9 +2,17 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <unordered_map>
+#include <chrono>
+
+#include <tbb/parallel_for.h>
 
 #include "sphere/arrangement.h"
+#include "sphere/region_union.h"
+#include "visibility/direction_window.h"
 #include "visibility/occluder_beam.h"
 
 namespace gvm {
@@ -18,9 +26,22 @@ using sphere::ArrangementPoint;
 constexpr int kLvm = 0;        // layer of LVM(S + N_S): coverage 1 inside its 2-cells
 constexpr int kOcclusion = 1;  // layer of the projected envelope: number of faces over u
 
-ExactVec diff(const SolidMesh& mesh, uint32_t q, uint32_t p) {
-  return ExactVec::from_point(mesh.points[q]) - ExactVec::from_point(mesh.points[p]);
-}
+// The vertices q - p of the sum, each built once: arcs that share an endpoint then share
+// its node, which lets the exact predicates see zeros by construction.
+class SumVertices {
+ public:
+  explicit SumVertices(const SolidMesh& mesh) : mesh_(mesh) {}
+  const ExactVec& at(uint32_t q, uint32_t p) {
+    auto [it, inserted] = cache_.try_emplace(uint64_t(q) << 32 | p);
+    if (inserted) it->second = ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]);
+    return it->second;
+  }
+  const ExactVec& at(uint32_t q, uint32_t p) const { return cache_.at(uint64_t(q) << 32 | p); }
+
+ private:
+  const SolidMesh& mesh_;
+  std::unordered_map<uint64_t, ExactVec> cache_;
+};
 
 // The cells of the LVM as arrangement input: face boundaries with weight 1 (the face on
 // their left), curves with weight 0 (they only mark where the LVM is), points.
@@ -60,6 +81,69 @@ ExactVec generic_direction(const std::vector<ExactVec>& circles,
   }
 }
 
+double coordinate_bound(const SolidMesh& mesh, std::span<const uint32_t> a,
+                        std::span<const uint32_t> b) {
+  double bound = 0;
+  for (auto triangles : {a, b}) {
+    for (uint32_t t : triangles) {
+      for (uint32_t v : mesh.triangles[t]) {
+        const Point3& p = mesh.points[v];
+        bound = std::max({bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+      }
+    }
+  }
+  return bound;
+}
+
+// A back-facing face projects to the convex polygon to the left of its edges (its
+// vertices run counter-clockwise around the outward normal, seen from outside).
+bool face_covers(const std::vector<ExactVec>& v, const ExactVec& r) {
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (exact::sign_det(v[i], v[(i + 1) % v.size()], r) != Sign::kPositive) return false;
+  }
+  return true;
+}
+
+// closure{coverage > 0} of the projected envelope: faces in groups of nearby directions
+// (Morton order of a vertex direction), the positive region of each group's border
+// chain, then their union.
+sphere::Region occluded_region(const SumVertices& sum, const std::vector<EnvelopeFace>& faces,
+                               const std::vector<std::vector<ExactVec>>& face_vertices,
+                               const ExactVec& r) {
+  constexpr size_t kGroupFaces = 128;
+  auto morton = [](const std::array<double, 3>& u) {
+    uint64_t code = 0;
+    for (int bit = 9; bit >= 0; --bit) {
+      for (int i = 0; i < 3; ++i) {
+        const auto cell = static_cast<uint64_t>(std::clamp((u[i] + 1) * 512, 0.0, 1023.0));
+        code = code << 1 | ((cell >> bit) & 1);
+      }
+    }
+    return code;
+  };
+  std::vector<std::pair<uint64_t, uint32_t>> order;
+  for (uint32_t f = 0; f < faces.size(); ++f) {
+    order.push_back({morton(exact::unit_estimate(face_vertices[f][0]).unit), f});
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<sphere::Region> groups((order.size() + kGroupFaces - 1) / kGroupFaces);
+  tbb::parallel_for(size_t{0}, groups.size(), [&](size_t g) {
+    std::vector<EnvelopeFace> members;
+    int covering = 0;
+    for (size_t k = g * kGroupFaces; k < std::min(order.size(), (g + 1) * kGroupFaces); ++k) {
+      members.push_back(faces[order[k].second]);
+      covering += face_covers(face_vertices[order[k].second], r);
+    }
+    std::vector<ArrangementArc> arcs;
+    for (const EnvelopeBorderEdge& e : border_chain(members)) {
+      const ExactVec &a = sum.at(e.q0, e.p0), &b = sum.at(e.q1, e.p1);
+      arcs.push_back({a, b, exact::cross(a, b), 0, e.multiplicity});
+    }
+    groups[g] = sphere::positive_region(arcs, r, covering);
+  });
+  return sphere::region_union(std::move(groups), r);
+}
+
 }  // namespace
 
 std::optional<sphere::SphericalImage> global_visibility_map(
@@ -70,12 +154,13 @@ std::optional<sphere::SphericalImage> global_visibility_map(
   const std::vector<uint32_t> beam = occluders_in_beam(mesh, s, o, lvm);
   if (stats) stats->occluders_in_beam = beam.size();
   if (beam.empty()) return lvm;
+  const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
   const EffectiveMinkowskiEnvelope eme =
-      compute_effective_minkowski_envelope(mesh, s, beam, /*keep_faces=*/true);
+      compute_effective_minkowski_envelope(mesh, s, beam, /*keep_faces=*/true, &window);
 
-  spdlog::debug("global occlusion: |S| {} |O| {} ({} in the beam): {} tentative, {} kept, {} envelope faces, {} "
+  spdlog::debug("global occlusion: |S| {} |O| {} ({} in the beam): {} tentative ({} outside the LVM), {} kept, {} envelope faces, {} "
                 "patches, {} border arcs",
-                s.size(), o.size(), beam.size(), eme.statistics.tentative_faces, eme.statistics.kept_faces,
+                s.size(), o.size(), beam.size(), eme.statistics.tentative_faces, eme.statistics.outside_window, eme.statistics.kept_faces,
                 eme.statistics.envelope_faces, eme.statistics.patches,
                 eme.statistics.border_edges);
   if (stats) stats->envelope = eme.statistics;
@@ -83,37 +168,39 @@ std::optional<sphere::SphericalImage> global_visibility_map(
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   add_lvm(lvm, arcs, points);
-  for (const EnvelopeBorderEdge& e : eme.border) {
-    ExactVec a = diff(mesh, e.q0, e.p0), b = diff(mesh, e.q1, e.p1);
-    arcs.push_back({a, b, exact::cross(a, b), kOcclusion, e.multiplicity});
-  }
 
-  // Coverage at a reference direction, counted face by face: a back-facing face projects
-  // to the convex polygon to the left of its edges (its vertices run counter-clockwise
-  // around the outward normal, seen from outside the sphere).
+  // The reference direction: on no circle of the LVM, of any face edge or of the points.
   std::vector<std::vector<ExactVec>> face_vertices;
   std::vector<ExactVec> circles;
   for (const ArrangementArc& a : arcs) circles.push_back(a.normal);
+  SumVertices sum(mesh);
   for (const EnvelopeFace& f : eme.faces) {
     std::vector<ExactVec> v;
-    for (auto [q, p] : f.vertices) v.push_back(diff(mesh, q, p));
+    for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
     for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
     face_vertices.push_back(std::move(v));
   }
   std::vector<ExactVec> point_dirs;
   for (const auto& p : points) point_dirs.push_back(p.p);
   const ExactVec r = generic_direction(circles, point_dirs);
+
+  const auto union_start = std::chrono::steady_clock::now();
+  const sphere::Region occluded = occluded_region(sum, eme.faces, face_vertices, r);
+  spdlog::debug("global occlusion: closure of the occluded directions: {} boundary arcs, {:.2f} s",
+                occluded.boundary.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - union_start).count());
+  for (const ArrangementArc& a : occluded.boundary) {
+    arcs.push_back({a.from, a.to, a.normal, kOcclusion, 1});
+  }
   int coverage[2] = {0, 0};
   coverage[kLvm] = !lvm.faces().empty() && lvm.contains(r) ? 1 : 0;
-  for (const auto& v : face_vertices) {
-    bool inside = true;
-    for (size_t i = 0; i < v.size() && inside; ++i) {
-      inside = exact::sign_det(v[i], v[(i + 1) % v.size()], r) == Sign::kPositive;
-    }
-    coverage[kOcclusion] += inside;
-  }
+  coverage[kOcclusion] = occluded.contains_reference ? 1 : 0;
 
+  const auto start = std::chrono::steady_clock::now();
   Arrangement arr(arcs, points, 2, r, coverage);
+  spdlog::debug("global occlusion: arrangement of {} arcs: {} vertices, {} edges, {:.2f} s", arcs.size(),
+                arr.vertices().size(), arr.edges().size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   const auto& faces = arr.faces();
   const auto& half = arr.half_edges();
   auto in_lvm_face = [&](uint32_t f) { return faces[f].coverage[kLvm] > 0; };

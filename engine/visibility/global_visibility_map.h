@@ -27,6 +27,6 @@ struct GlobalOcclusionStatistics {
 std::optional<sphere::SphericalImage> global_visibility_map(
     const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o,
     const sphere::SphericalImage& lvm, GlobalOcclusionStatistics* stats = nullptr,
-    size_t max_border_arcs = 4000);
+    size_t max_border_arcs = 4000000);
 
 }  // namespace gvm

@@ -1,0 +1,124 @@
+#include "sphere/box_tree.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace gvm::sphere {
+namespace {
+
+constexpr uint32_t kLeafSize = 8;
+
+Box merge(const Box& a, const Box& b) {
+  Box m;
+  for (int i = 0; i < 3; ++i) {
+    m.lo[i] = std::min(a.lo[i], b.lo[i]);
+    m.hi[i] = std::max(a.hi[i], b.hi[i]);
+  }
+  return m;
+}
+
+}  // namespace
+
+BoxTree::BoxTree(std::span<const Box> boxes) : boxes_(boxes.begin(), boxes.end()) {
+  order_.resize(boxes_.size());
+  std::iota(order_.begin(), order_.end(), 0u);
+  if (!boxes_.empty()) build(0, static_cast<uint32_t>(boxes_.size()));
+}
+
+uint32_t BoxTree::build(uint32_t begin, uint32_t end) {
+  const uint32_t id = static_cast<uint32_t>(nodes_.size());
+  nodes_.push_back({boxes_[order_[begin]], begin, end, 0, 0});
+  Box box = boxes_[order_[begin]];
+  for (uint32_t k = begin + 1; k < end; ++k) box = merge(box, boxes_[order_[k]]);
+  nodes_[id].box = box;
+  if (end - begin <= kLeafSize) return id;
+  // Split at the median centre along the axis where the boxes spread most.
+  int axis = 0;
+  double spread = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (box.hi[i] - box.lo[i] > spread) spread = box.hi[i] - box.lo[i], axis = i;
+  }
+  const uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](uint32_t a, uint32_t b) {
+                     return boxes_[a].lo[axis] + boxes_[a].hi[axis] <
+                            boxes_[b].lo[axis] + boxes_[b].hi[axis];
+                   });
+  const uint32_t left = build(begin, mid);
+  const uint32_t right = build(mid, end);
+  nodes_[id].left = left;
+  nodes_[id].right = right;
+  return id;
+}
+
+void BoxTree::pairs_within(uint32_t n, std::vector<std::pair<uint32_t, uint32_t>>& out) const {
+  const Node& node = nodes_[n];
+  if (node.left == 0) {
+    for (uint32_t a = node.begin; a < node.end; ++a) {
+      for (uint32_t b = a + 1; b < node.end; ++b) {
+        if (overlap(boxes_[order_[a]], boxes_[order_[b]])) {
+          out.emplace_back(std::min(order_[a], order_[b]), std::max(order_[a], order_[b]));
+        }
+      }
+    }
+    return;
+  }
+  pairs_within(node.left, out);
+  pairs_within(node.right, out);
+  pairs_between(node.left, node.right, out);
+}
+
+void BoxTree::pairs_between(uint32_t a, uint32_t b,
+                            std::vector<std::pair<uint32_t, uint32_t>>& out) const {
+  const Node &na = nodes_[a], &nb = nodes_[b];
+  if (!overlap(na.box, nb.box)) return;
+  const bool a_leaf = na.left == 0, b_leaf = nb.left == 0;
+  if (a_leaf && b_leaf) {
+    for (uint32_t i = na.begin; i < na.end; ++i) {
+      for (uint32_t j = nb.begin; j < nb.end; ++j) {
+        if (overlap(boxes_[order_[i]], boxes_[order_[j]])) {
+          out.emplace_back(std::min(order_[i], order_[j]), std::max(order_[i], order_[j]));
+        }
+      }
+    }
+    return;
+  }
+  // Descend into the larger of the two.
+  if (b_leaf || (!a_leaf && na.end - na.begin >= nb.end - nb.begin)) {
+    pairs_between(na.left, b, out);
+    pairs_between(na.right, b, out);
+  } else {
+    pairs_between(a, nb.left, out);
+    pairs_between(a, nb.right, out);
+  }
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> BoxTree::overlapping_pairs() const {
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  if (!nodes_.empty()) pairs_within(0, out);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<uint32_t> BoxTree::overlapping(const Box& query) const {
+  std::vector<uint32_t> out;
+  if (nodes_.empty()) return out;
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    stack.pop_back();
+    if (!overlap(n.box, query)) continue;
+    if (n.left == 0) {
+      for (uint32_t k = n.begin; k < n.end; ++k) {
+        if (overlap(boxes_[order_[k]], query)) out.push_back(order_[k]);
+      }
+    } else {
+      stack.push_back(n.left);
+      stack.push_back(n.right);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace gvm::sphere

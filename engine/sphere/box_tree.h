@@ -1,0 +1,50 @@
+// Candidate pairs for the arrangement: a static bounding-box tree over axis-aligned boxes
+// in R^3 (boxes around arcs and points of the sphere). It finds every pair of
+// overlapping boxes in O(n log n + pairs), whatever the clustering; it decides nothing
+// by itself (the exact predicates do), so a box only has to contain its object.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace gvm::sphere {
+
+struct Box {
+  std::array<double, 3> lo, hi;
+};
+
+class BoxTree {
+ public:
+  explicit BoxTree(std::span<const Box> boxes);
+
+  // Every pair (i, j), i < j, of overlapping boxes, sorted.
+  std::vector<std::pair<uint32_t, uint32_t>> overlapping_pairs() const;
+  // Indices of the boxes that overlap `query`, sorted.
+  std::vector<uint32_t> overlapping(const Box& query) const;
+
+ private:
+  struct Node {
+    Box box;
+    uint32_t begin, end;       // range of order_
+    uint32_t left, right;      // children, 0 for a leaf (the root is never a child)
+  };
+  uint32_t build(uint32_t begin, uint32_t end);
+  void pairs_within(uint32_t n, std::vector<std::pair<uint32_t, uint32_t>>& out) const;
+  void pairs_between(uint32_t a, uint32_t b, std::vector<std::pair<uint32_t, uint32_t>>& out) const;
+
+  std::vector<Box> boxes_;
+  std::vector<uint32_t> order_;
+  std::vector<Node> nodes_;
+};
+
+inline bool overlap(const Box& a, const Box& b) {
+  for (int i = 0; i < 3; ++i) {
+    if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace gvm::sphere

@@ -1,0 +1,80 @@
+#include "visibility/direction_window.h"
+
+#include <cmath>
+
+namespace gvm {
+namespace {
+
+using D3 = std::array<double, 3>;
+
+D3 cross(const D3& a, const D3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+D3 normalized(const D3& a) {
+  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  return {a[0] / n, a[1] / n, a[2] / n};
+}
+
+D3 negated(const D3& a) { return {-a[0], -a[1], -a[2]}; }
+
+}  // namespace
+
+DirectionWindow::DirectionWindow(const sphere::SphericalImage& lvm, double coordinate_bound)
+    // Each value m . q is off by about 1e-15 * coordinate_bound (rounding, and m being a
+    // rounded unit vector); the slack is far above that and far below any real margin.
+    : slack_(1e-9 * coordinate_bound) {
+  if (lvm.is_full_sphere()) return;
+  auto end_cell = [&] { cell_end_.push_back(normals_.size()); };
+  // A convex 2-cell is the intersection of the hemispheres of its arcs.
+  for (const sphere::Face& f : lvm.faces()) {
+    for (const sphere::Loop& loop : f.loops) {
+      for (const sphere::Arc& arc : loop.arcs) normals_.push_back(arc.normal.unit());
+    }
+    end_cell();
+  }
+  // An arc lies on its circle and, when shorter than 180 degrees, on the forward side of
+  // its start and the backward side of its end.
+  for (const sphere::Arc& arc : lvm.curves()) {
+    const D3 n = arc.normal.unit();
+    normals_.push_back(n);
+    normals_.push_back(negated(n));
+    if (!arc.full) {
+      const D3 a = arc.start.unit(), b = arc.end.unit();
+      const D3 axb = cross(a, b);
+      if (axb[0] * n[0] + axb[1] * n[1] + axb[2] * n[2] > 1e-6) {
+        normals_.push_back(normalized(cross(n, a)));
+        normals_.push_back(normalized(cross(b, n)));
+      }
+    }
+    end_cell();
+  }
+  // A point lies on two orthogonal circles through it and in its own hemisphere.
+  for (const exact::ExactVec& p : lvm.points()) {
+    const D3 u = p.unit();
+    const D3 helper = std::fabs(u[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
+    const D3 n1 = normalized(cross(u, helper)), n2 = cross(u, n1);
+    for (const D3& m : {n1, negated(n1), n2, negated(n2), u}) normals_.push_back(m);
+    end_cell();
+  }
+}
+
+void DirectionWindow::values(const Point3& x, double* out) const {
+  for (size_t k = 0; k < normals_.size(); ++k) {
+    const D3& m = normals_[k];
+    out[k] = m[0] * x[0] + m[1] * x[1] + m[2] * x[2];
+  }
+}
+
+bool DirectionWindow::may_meet(const double* q_max, const double* p_min) const {
+  size_t begin = 0;
+  for (size_t end : cell_end_) {
+    bool separated = false;
+    for (size_t k = begin; k < end && !separated; ++k) separated = q_max[k] - p_min[k] < -slack_;
+    if (!separated) return true;
+    begin = end;
+  }
+  return cell_end_.empty();
+}
+
+}  // namespace gvm

@@ -1,0 +1,40 @@
+// The directions that matter for a GVM, as half-spaces for pruning the envelope.
+//
+// GVM(S) = L - Int(Phi(O + (-S))) with L = LVM(S + N_S). A face of the envelope whose
+// projection lies at a positive distance from L changes the coverage nowhere near L, so
+// leaving it out (and taking the border of the faces that remain) gives the same GVM.
+// The window holds, for every cell of L, great-circle half-spaces {x : m . x >= 0} that
+// contain the cell; a face whose vertex directions q - p all lie strictly outside one
+// half-space of every cell is such a face. Decided in double precision with a certified
+// slack, so that a face is left out only when that is certain.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "gvm/geometry.h"
+#include "sphere/spherical_image.h"
+
+namespace gvm {
+
+class DirectionWindow {
+ public:
+  // coordinate_bound: at least the largest absolute coordinate of any point used below.
+  DirectionWindow(const sphere::SphericalImage& lvm, double coordinate_bound);
+
+  // Number of half-spaces (0: the window holds every direction).
+  size_t size() const { return normals_.size(); }
+  // out[k] = m_k . x for every half-space k.
+  void values(const Point3& x, double* out) const;
+  // False only if the directions q - p of a face certainly miss L: q_max[k] is the
+  // largest m_k . q over the face's vertices q of O, p_min[k] the smallest m_k . p over
+  // its vertices p of S (the face's vertices are all pairs (q, p)).
+  bool may_meet(const double* q_max, const double* p_min) const;
+
+ private:
+  std::vector<std::array<double, 3>> normals_;
+  std::vector<size_t> cell_end_;  // half-spaces of cell c: [cell_end_[c - 1], cell_end_[c])
+  double slack_ = 0;
+};
+
+}  // namespace gvm
