@@ -37,9 +37,9 @@ analyze options:
   --json OUT           also write the full result as JSON (protobuf JSON mapping
                        of gvm.v1.Analysis) to OUT ("-" for standard output)
   --threads N          worker threads (default: all cores)
-  --global-occlusion   also compute the occlusion by O_S (effective Minkowski
-                       envelope) and report exact GVMs; experimental until it is
-                       verified against the ray-casting oracle on real parts
+  --lvm-only           skip the occlusion by O_S (effective Minkowski envelope):
+                       report LVM(S + N_S) only, an outer bound of each GVM
+                       that takes a fraction of the time
   -v, --verbose        log details to standard error
   -q, --quiet          print only errors (no report unless --json -)
 
@@ -56,7 +56,7 @@ struct Args {
   std::optional<double> feature_angle;
   unsigned threads = 0;
   bool verbose = false;
-  bool global_occlusion = false;
+  bool lvm_only = false;
   bool quiet = false;
 };
 
@@ -103,8 +103,10 @@ std::optional<int> parse_analyze(const std::vector<std::string>& argv, Args& arg
         return usage_error("--feature-angle needs an angle in degrees, 0 < DEG < 180");
       }
       args.feature_angle = deg;
+    } else if (a == "--lvm-only") {
+      args.lvm_only = true;
     } else if (a == "--global-occlusion") {
-      args.global_occlusion = true;
+      // The default since 0.2; still accepted so that existing scripts keep working.
     } else if (a == "-v" || a == "--verbose") {
       args.verbose = true;
     } else if (a == "-q" || a == "--quiet") {
@@ -143,7 +145,7 @@ int run_analyze(const Args& args) {
   request.part_path = args.part;
   request.groups_path = args.groups;
   request.options.set_threads(args.threads);
-  request.options.set_global_occlusion(args.global_occlusion);
+  request.options.set_lvm_only(args.lvm_only);
   if (args.feature_angle) request.options.set_feature_angle_degrees(*args.feature_angle);
 
   auto result = gvm::analyze(request);

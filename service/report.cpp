@@ -24,13 +24,7 @@ std::string gvm_line(const v1::SphericalImage& gvm, const v1::SurfaceInfo& info)
       return "GVM: " + map_line(gvm) + "  (#GOM " + std::to_string(info.envelope_border_arcs()) +
              ", #Arrng " + std::to_string(info.arrangement_vertices()) + ")";
     case v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED:
-      if (info.envelope_border_arcs() > 0) {
-        return "GVM not computed: the envelope of O_S has " +
-               std::to_string(info.envelope_border_arcs()) +
-               " border arcs, more than this version overlays; LVM(S + N_S) is an outer bound";
-      }
-      return "GVM not computed (global occlusion by O_S not requested: --global-occlusion); "
-             "LVM(S + N_S) is an outer bound";
+      return "GVM not computed (--lvm-only); LVM(S + N_S) is an outer bound";
     default:
       return gvm.description();
   }

@@ -60,8 +60,8 @@ std::string read_file(const fs::path& p) {
 TEST(Cli, HelpIsCompleteAndSucceeds) {
   CliRun r = run("--help");
   EXPECT_EQ(r.status, 0);
-  for (const char* word : {"analyze", "--groups", "--json", "--threads", "--feature-angle", "OFF",
-                           "STL", "PLY", "OBJ"}) {
+  for (const char* word : {"analyze", "--groups", "--json", "--threads", "--feature-angle",
+                           "--lvm-only", "OFF", "STL", "PLY", "OBJ"}) {
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
   }
 }
@@ -114,6 +114,32 @@ TEST(Cli, ReportAndJsonOnARealPart) {
     for (uint32_t face : f.faces()) ++seen.at(face);
   }
   for (int count : seen) EXPECT_EQ(count, 1);
+  // The global occlusion is computed by default: every surface has its exact GVM.
+  for (const auto& f : a.features()) {
+    EXPECT_NE(f.info().gvm_status(), gvm::v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED) << f.name();
+    EXPECT_TRUE(f.has_gvm()) << f.name();
+  }
+  for (const auto& g : a.regions()) EXPECT_TRUE(g.has_gvm()) << g.id();
+}
+
+TEST(Cli, LvmOnlyLeavesTheGlobalOcclusionOut) {
+  fs::path dir = temp_dir();
+  fs::path json = dir / "plug-lvm.json";
+  CliRun r = run("analyze " + shared("data/parts/prusa_plug-aligner.stl") + " --lvm-only --json " +
+                 json.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("--lvm-only"), std::string::npos) << r.out;
+  gvm::v1::Analysis a = parse(read_file(json));
+  int not_computed = 0;
+  for (const auto& f : a.features()) {
+    const bool occluders = f.info().potential_occluders() > 0;
+    if (f.info().gvm_status() == gvm::v1::GVM_STATUS_EMPTY_VOID) continue;
+    EXPECT_EQ(f.info().gvm_status() == gvm::v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED, occluders)
+        << f.name();
+    EXPECT_EQ(f.has_gvm(), !occluders) << f.name();
+    not_computed += occluders;
+  }
+  EXPECT_GT(not_computed, 0);
 }
 
 TEST(Cli, SameJsonWithOneAndTwoThreads) {

@@ -65,6 +65,7 @@ void fill_surface(const SolidMesh& mesh, std::span<const uint32_t> triangles,
     info->set_arrangement_vertices(vis.statistics.arrangement_vertices);
     info->set_envelope_faces(vis.statistics.envelope.envelope_faces);
     info->set_envelope_patches(vis.statistics.envelope.patches);
+    info->set_occluded_boundary_arcs(vis.statistics.occluded_boundary_arcs);
   }
 }
 
@@ -180,7 +181,7 @@ StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
                           if (progress.cancelled()) return;
                           auto ts = Clock::now();
                           maps[i] = compute_surface_visibility(*part, surfaces[i],
-                                                               request.options.global_occlusion());
+                                                               !request.options.lvm_only());
                           surface_seconds[i] = seconds_since(ts);
                           progress.tick();
                         }

@@ -14,6 +14,7 @@ Region positive_region(std::span<const ArrangementArc> arcs, const exact::ExactV
   const auto& faces = arr.faces();
   Region region;
   region.contains_reference = reference_coverage > 0;
+  region.arrangement_vertices = arr.vertices().size();
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
     const Arrangement::Edge& edge = arr.edges()[e];
     // half[2e] runs v0 -> v1 with its face on the left.
@@ -44,12 +45,15 @@ Region region_union(std::vector<Region> parts, const exact::ExactVec& reference)
       if (a.boundary.empty() || b.boundary.empty()) {
         // A region without boundary is empty or the whole sphere.
         const Region& bare = a.boundary.empty() ? a : b;
-        merged[i] = bare.contains_reference ? bare : (&bare == &a ? b : a);
+        const Region& other = &bare == &a ? b : a;
+        merged[i] = bare.contains_reference ? bare : other;
+        merged[i].arrangement_vertices = a.arrangement_vertices + b.arrangement_vertices;
         return;
       }
       std::vector<ArrangementArc> arcs = a.boundary;
       arcs.insert(arcs.end(), b.boundary.begin(), b.boundary.end());
       merged[i] = positive_region(arcs, reference, int(a.contains_reference) + int(b.contains_reference));
+      merged[i].arrangement_vertices += a.arrangement_vertices + b.arrangement_vertices;
     });
     parts = std::move(merged);
   }

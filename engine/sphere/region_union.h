@@ -21,6 +21,8 @@ namespace gvm::sphere {
 struct Region {
   std::vector<ArrangementArc> boundary;
   bool contains_reference = false;
+  // Vertices of all the arrangements built to find this region (a measure of the work).
+  uint64_t arrangement_vertices = 0;
 };
 
 // closure{coverage > 0} for weighted arcs (their layer is ignored) whose coverage at

@@ -146,10 +146,10 @@ sphere::Region occluded_region(const SumVertices& sum, const std::vector<Envelop
 
 }  // namespace
 
-std::optional<sphere::SphericalImage> global_visibility_map(
-    const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o,
-    const sphere::SphericalImage& lvm, GlobalOcclusionStatistics* stats,
-    size_t max_border_arcs) {
+sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
+                                             std::span<const uint32_t> o,
+                                             const sphere::SphericalImage& lvm,
+                                             GlobalOcclusionStatistics* stats) {
   if (lvm.is_empty() || o.empty()) return lvm;
   const std::vector<uint32_t> beam = occluders_in_beam(mesh, s, o, lvm);
   if (stats) stats->occluders_in_beam = beam.size();
@@ -164,7 +164,6 @@ std::optional<sphere::SphericalImage> global_visibility_map(
                 eme.statistics.envelope_faces, eme.statistics.patches,
                 eme.statistics.border_edges);
   if (stats) stats->envelope = eme.statistics;
-  if (eme.border.size() > max_border_arcs) return std::nullopt;
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   add_lvm(lvm, arcs, points);
@@ -227,9 +226,8 @@ std::optional<sphere::SphericalImage> global_visibility_map(
   };
   sphere::SphericalImage gvm = arr.extract(face_in, edge_in, vertex_in);
   if (stats) {
-    stats->arrangement_vertices = arr.vertices().size();
-    stats->arrangement_edges = arr.edges().size();
-    stats->arrangement_faces = faces.size();
+    stats->occluded_boundary_arcs = occluded.boundary.size();
+    stats->arrangement_vertices = occluded.arrangement_vertices + arr.vertices().size();
   }
   return gvm;
 }

@@ -51,9 +51,8 @@ SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const u
   if (out.occluders.potential.empty()) {
     out.kind = GvmKind::kExactNoPotentialOccluders;
     out.gvm = out.lvm;
-  } else if (global_occlusion &&
-             (out.gvm = global_visibility_map(mesh, s, out.occluders.potential, out.lvm,
-                                              &out.statistics))) {
+  } else if (global_occlusion) {
+    out.gvm = global_visibility_map(mesh, s, out.occluders.potential, out.lvm, &out.statistics);
     out.kind = GvmKind::kGlobalOcclusionComputed;
   } else {
     out.kind = GvmKind::kGlobalOcclusionNotComputed;

@@ -6,7 +6,8 @@
 //                    [--max-points P] [--probe x,y,z]... [--negate] [--verbose]
 //
 // For every feature and every concave region S of each part, N random directions u
-// (uniform on the sphere; the seed is printed, each surface has its own stream derived from
+// uniform on the sphere and N more within 10 degrees of a corner of the GVM or the LVM
+// (the seed is printed, each surface has its own stream derived from
 // it so that --feature/--region reproduce the same directions) are tested: u is skipped when
 // its angular distance to the boundary of the GVM (loop edges, arcs, points) is below the
 // margin; otherwise engine_visible(u) (u inside a 2-cell of the GVM, decided by the parity of
@@ -83,6 +84,16 @@ Image image_of(const gvm::v1::SphericalImage& m) {
   }
   for (const auto& p : m.points()) im.points.push_back(from_proto(p));
   return im;
+}
+
+// Every vertex of the image: loop vertices, polyline vertices, points.
+std::vector<Vec> corners(const Image& im) {
+  std::vector<Vec> out = im.points;
+  for (const auto& poly : im.polygons) {
+    for (const auto& loop : poly) out.insert(out.end(), loop.begin(), loop.end());
+  }
+  for (const auto& arc : im.arcs) out.insert(out.end(), arc.begin(), arc.end());
+  return out;
 }
 
 // Angular distance from u to the minor great-circle arc a-b (radians).
@@ -245,7 +256,7 @@ struct Surface {
 
 struct PartTotals {
   int surfaces = 0, surfaces_checked = 0, surfaces_skipped = 0;
-  long tested = 0, skipped_near_boundary = 0, agree = 0, disagree = 0, undecided = 0;
+  long tested = 0, visible = 0, skipped_near_boundary = 0, agree = 0, disagree = 0, undecided = 0;
 };
 
 // Explains an oracle "blocked" answer: self-occluding triangle or blocked ray.
@@ -417,9 +428,22 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
     const auto t1 = std::chrono::steady_clock::now();
     for (const Vec& u : opt.probes) check(u, true);
     for (int i = 0; i < opt.directions; ++i) check(random_direction(rng), false);
+    // As many again near the corners of the GVM and of the LVM, where the answer changes:
+    // uniform directions alone rarely land in a small GVM.
+    gvm::v1::SphericalImage lvm_proto;
+    vis.lvm.to_proto(&lvm_proto);
+    std::vector<Vec> anchors = corners(im);
+    for (const Vec& v : corners(image_of(lvm_proto))) anchors.push_back(v);
+    for (int i = 0; i < opt.directions && !anchors.empty(); ++i) {
+      const Vec& a = anchors[rng() % anchors.size()];
+      const Vec t = normalized(cross(a, random_direction(rng)));
+      const double theta = std::uniform_real_distribution<double>(0, 10 * kDeg)(rng);
+      check(normalized(add(scale(a, std::cos(theta)), scale(t, std::sin(theta)))), false);
+    }
     const double oracle_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     totals.tested += tested;
+    totals.visible += visible_count;
     totals.skipped_near_boundary += skipped;
     totals.disagree += dis;
     std::printf(
@@ -510,9 +534,10 @@ int main(int argc, char** argv) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf(
-        "SUMMARY %s: surfaces %d (checked %d, skipped %d), directions tested %ld, skipped near "
-        "boundary %ld, undecided %ld, agreements %ld, disagreements %ld, %.2f s\n",
-        path.c_str(), t.surfaces, t.surfaces_checked, t.surfaces_skipped, t.tested,
+        "SUMMARY %s: surfaces %d (checked %d, skipped %d), directions tested %ld (oracle "
+        "visible %ld), skipped near boundary %ld, undecided %ld, agreements %ld, "
+        "disagreements %ld, %.2f s\n",
+        path.c_str(), t.surfaces, t.surfaces_checked, t.surfaces_skipped, t.tested, t.visible,
         t.skipped_near_boundary, t.undecided, t.agree, t.disagree, seconds);
     std::fflush(stdout);
     total_disagree += t.disagree;
