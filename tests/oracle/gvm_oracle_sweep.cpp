@@ -3,7 +3,7 @@
 //
 //   gvm_oracle_sweep PART... [--directions N] [--margin DEG] [--max-features K] [--seed S]
 //                    [--feature ID]... [--region ID]... [--no-features] [--no-regions]
-//                    [--max-points P] [--probe x,y,z]... [--negate] [--verbose]
+//                    [--max-points P] [--max-grid G] [--probe x,y,z]... [--negate] [--verbose]
 //
 // For every feature and every concave region S of each part, N random directions u
 // uniform on the sphere and N more within 10 degrees of a corner of the GVM or the LVM
@@ -225,6 +225,7 @@ struct Options {
   std::set<uint32_t> only_features, only_regions;
   bool features = true, regions = true;
   std::size_t max_points = 2000;
+  int max_grid = 8;
   std::vector<Vec> probes;
   bool negate = false;
   bool verbose = false;
@@ -234,7 +235,7 @@ void usage() {
   std::fprintf(stderr,
                "usage: gvm_oracle_sweep PART... [--directions N] [--margin DEG] "
                "[--max-features K] [--seed S] [--feature ID]... [--region ID]... "
-               "[--no-features] [--no-regions] [--max-points P] [--probe x,y,z]... "
+               "[--no-features] [--no-regions] [--max-points P] [--max-grid G] [--probe x,y,z]... "
                "[--negate] [--verbose]\n");
 }
 
@@ -304,6 +305,7 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
   const gvm::SolidMesh& m = part->mesh();
   gvm::oracle::OracleOptions oracle_options;
   oracle_options.max_points = opt.max_points;
+  oracle_options.max_grid = opt.max_grid;
   const gvm::oracle::RayOracle oracle(m, oracle_options);
   std::printf("%s: %zu triangles, %zu features, %zu regions\n", path.c_str(), m.triangles.size(),
               part->features().size(), part->regions().size());
@@ -497,6 +499,7 @@ int main(int argc, char** argv) {
     else if (a == "--no-features") opt.features = false;
     else if (a == "--no-regions") opt.regions = false;
     else if (a == "--max-points") opt.max_points = std::stoul(next());
+    else if (a == "--max-grid") opt.max_grid = std::stoi(next());
     else if (a == "--negate") opt.negate = true;
     else if (a == "--verbose") opt.verbose = true;
     else if (a == "--probe") {

@@ -61,6 +61,9 @@ RayOracle::RayOracle(const SolidMesh& mesh, OracleOptions options)
     Vec b = to_vec(mesh.points[mesh.triangles[t][1]]);
     Vec c = to_vec(mesh.points[mesh.triangles[t][2]]);
     normal_[t] = cross(sub(b, a), sub(c, a));
+    for (int i = 0; i < 3; ++i) {
+      across_[{mesh.triangles[t][i], mesh.triangles[t][(i + 1) % 3]}] = static_cast<uint32_t>(t);
+    }
     for (int k = 0; k < 3; ++k) centroids[t][k] = (a[k] + b[k] + c[k]) / 3.0;
   }
   order_.resize(n);
@@ -215,10 +218,148 @@ bool RayOracle::surface_visible(const std::vector<uint32_t>& s, const std::vecto
     const Vec& n = normal_[t];
     if (dot(u, n) < -options_.self_tolerance * norm(n)) return false;  // self-occlusion
   }
+  const std::set<uint32_t> in_s(s.begin(), s.end());
+  for (uint32_t t : s) {
+    const Triangle& tri = mesh_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      // The triangle F across edge (a, b) is the one with the directed edge (b, a).
+      auto it = across_.find({tri[(i + 1) % 3], tri[i]});
+      if (it == across_.end() || in_s.count(it->second)) continue;
+      const uint32_t f = it->second;
+      const Triangle& g = mesh_.triangles[f];
+      uint32_t far = g[0];
+      for (uint32_t v : g) {
+        if (v != tri[i] && v != tri[(i + 1) % 3]) far = v;
+      }
+      // Concave: F's far vertex lies in front of S's plane.
+      const Vec& nt = normal_[t];
+      const Vec d = sub(to_vec(mesh_.points[far]), to_vec(mesh_.points[tri[i]]));
+      const bool concave = dot(nt, d) > options_.self_tolerance * norm(nt) * norm(d);
+      const Vec& nf = normal_[f];
+      if (concave && dot(u, nf) < -options_.self_tolerance * norm(nf)) return false;
+    }
+  }
   for (const Vec& p : points) {
     if (ray_blocked(p, u)) return false;
   }
-  return true;
+  return !any_ray_blocked(s, u);
+}
+
+namespace {
+
+using Vec2 = std::array<double, 2>;
+
+double cross2(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+double area2(const std::vector<Vec2>& p) {
+  double a = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Vec2 &x = p[i], &y = p[(i + 1) % p.size()];
+    a += x[0] * y[1] - y[0] * x[1];
+  }
+  return a / 2;
+}
+
+// Sutherland-Hodgman: the part of `poly` to the left of a -> b.
+std::vector<Vec2> clip(const std::vector<Vec2>& poly, const Vec2& a, const Vec2& b) {
+  std::vector<Vec2> out;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
+    const double sp = cross2(a, b, p), sq = cross2(a, b, q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp >= 0) != (sq >= 0)) {
+      const double t = sp / (sp - sq);
+      out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+    }
+  }
+  return out;
+}
+
+// Depth along u at the 2-D point c of a triangle given by 2-D corners and depths.
+double depth_at(const std::array<Vec2, 3>& t, const std::array<double, 3>& d, const Vec2& c) {
+  const double det = cross2(t[0], t[1], t[2]);
+  const double l1 = cross2(t[0], c, t[2]) / det;
+  const double l2 = cross2(t[0], t[1], c) / det;
+  return d[0] + l1 * (d[1] - d[0]) + l2 * (d[2] - d[0]);
+}
+
+}  // namespace
+
+bool RayOracle::any_ray_blocked(const std::vector<uint32_t>& s, const Vec& u) const {
+  if (nodes_.empty()) return false;
+  const Vec helper = std::fabs(u[0]) < 0.6 ? Vec{1, 0, 0} : Vec{0, 1, 0};
+  Vec e1 = cross(u, helper);
+  const double l1 = norm(e1);
+  e1 = {e1[0] / l1, e1[1] / l1, e1[2] / l1};
+  const Vec e2 = cross(u, e1);
+  auto project = [&](uint32_t t, std::array<Vec2, 3>& p, std::array<double, 3>& d) {
+    for (int i = 0; i < 3; ++i) {
+      const Vec v = to_vec(mesh_.points[mesh_.triangles[t][i]]);
+      p[i] = {dot(v, e1), dot(v, e2)};
+      d[i] = dot(v, u);
+    }
+    if (cross2(p[0], p[1], p[2]) < 0) {
+      std::swap(p[1], p[2]);
+      std::swap(d[1], d[2]);
+    }
+  };
+  for (uint32_t t : s) {
+    std::array<Vec2, 3> tp;
+    std::array<double, 3> td;
+    project(t, tp, td);
+    const double t_area = cross2(tp[0], tp[1], tp[2]) / 2;
+    if (!(t_area > 0)) continue;  // seen edge-on: no rays leave it along u
+    Vec2 lo{std::min({tp[0][0], tp[1][0], tp[2][0]}), std::min({tp[0][1], tp[1][1], tp[2][1]})};
+    Vec2 hi{std::max({tp[0][0], tp[1][0], tp[2][0]}), std::max({tp[0][1], tp[1][1], tp[2][1]})};
+    const double t_depth = std::min({td[0], td[1], td[2]});
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
+      // The node's box seen along u: its 2-D extent and how far ahead it reaches.
+      Vec2 blo{1e300, 1e300}, bhi{-1e300, -1e300};
+      double ahead = -1e300;
+      for (int c = 0; c < 8; ++c) {
+        const Vec v{c & 1 ? node.hi[0] : node.lo[0], c & 2 ? node.hi[1] : node.lo[1],
+                    c & 4 ? node.hi[2] : node.lo[2]};
+        const double x = dot(v, e1), y = dot(v, e2);
+        blo = {std::min(blo[0], x), std::min(blo[1], y)};
+        bhi = {std::max(bhi[0], x), std::max(bhi[1], y)};
+        ahead = std::max(ahead, dot(v, u));
+      }
+      if (bhi[0] < lo[0] || blo[0] > hi[0] || bhi[1] < lo[1] || blo[1] > hi[1] ||
+          ahead < t_depth) {
+        continue;
+      }
+      if (node.count == 0) {
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+        continue;
+      }
+      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const uint32_t f = order_[i];
+        if (f == t || !(dot(u, normal_[f]) < -options_.front_tolerance * norm(normal_[f]))) {
+          continue;
+        }
+        std::array<Vec2, 3> fp;
+        std::array<double, 3> fd;
+        project(f, fp, fd);
+        std::vector<Vec2> overlap(tp.begin(), tp.end());
+        for (int k = 0; k < 3 && overlap.size() >= 3; ++k) overlap = clip(overlap, fp[k], fp[(k + 1) % 3]);
+        if (overlap.size() < 3) continue;
+        const double f_area = cross2(fp[0], fp[1], fp[2]) / 2;
+        if (!(area2(overlap) > 1e-10 * std::max(t_area, f_area))) continue;
+        Vec2 c{0, 0};
+        for (const Vec2& p : overlap) c = {c[0] + p[0] / overlap.size(), c[1] + p[1] / overlap.size()};
+        // The mesh does not self-intersect, so F is ahead of T all over the overlap or
+        // nowhere; the centroid decides.
+        if (depth_at(fp, fd, c) > depth_at(tp, td, c) + tmin_) return true;
+      }
+    }
+  }
+  return false;
 }
 
 bool surface_visible(const SolidMesh& mesh, const std::vector<uint32_t>& s_triangles,

@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "gvm/mesh.h"
@@ -55,13 +56,25 @@ class RayOracle {
   std::vector<Vec> sample_points(const std::vector<uint32_t>& s_triangles) const;
 
   // u must be a unit vector (the tolerances are relative to it).
-  // False if some triangle of S faces away from u (self-occlusion) or if a ray from one of
-  // `points` along u is blocked; true otherwise.
+  // False if some triangle of S faces away from u (self-occlusion), if a ray from a point
+  // of S's border edges is blocked at once (below), or if a ray from one of `points` along
+  // u is blocked; true otherwise.
+  //
+  // Border edges: sample points are inset, and near an edge where S meets a face F at a
+  // concave angle the blocked part of S can be far thinner than any sampling (a 2 µm
+  // strip of CAD face beside a wall). A ray from a point of that edge enters the solid at
+  // once iff u . n_F < 0, which is decided here from the two planes directly.
   bool surface_visible(const std::vector<uint32_t>& s_triangles, const std::vector<Vec>& points,
                        const Vec& u) const;
   bool surface_visible(const std::vector<uint32_t>& s_triangles, const Vec& u) const {
     return surface_visible(s_triangles, sample_points(s_triangles), u);
   }
+
+  // Rays from every point of S at once: some triangle F of the mesh, met from its front
+  // side, and a triangle T of S overlap with positive area when projected along u, with F
+  // ahead of T there. This catches blocked parts of S far thinner than any sampling
+  // (a shadow edge that just clips a corner of S); candidates come from the BVH.
+  bool any_ray_blocked(const std::vector<uint32_t>& s_triangles, const Vec& u) const;
 
   // The ray p + t u (t > tmin) meets some triangle transversally from its front side; the
   // first such triangle found is returned in *hit when not null.
@@ -84,6 +97,8 @@ class RayOracle {
   std::vector<Node> nodes_;
   std::vector<uint32_t> order_;     // triangle indices, leaves index ranges of this
   std::vector<Vec> normal_;         // area normal (b-a) x (c-a) of each triangle
+  // For each directed edge (a, b) of a triangle: the triangle across it.
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> across_;
 };
 
 // One-shot convenience: builds the BVH, samples S and decides visibility along u.
