@@ -37,6 +37,9 @@ analyze options:
   --json OUT           also write the full result as JSON (protobuf JSON mapping
                        of gvm.v1.Analysis) to OUT ("-" for standard output)
   --threads N          worker threads (default: all cores)
+  --method M           how the occlusion by O_S is computed: eme (effective
+                       Minkowski envelope, the default) or convex (union of
+                       pairwise occlusion maps, the baseline); same GVMs
   --lvm-only           skip the occlusion by O_S (effective Minkowski envelope):
                        report LVM(S + N_S) only, an outer bound of each GVM
                        that takes a fraction of the time
@@ -57,6 +60,7 @@ struct Args {
   unsigned threads = 0;
   bool verbose = false;
   bool lvm_only = false;
+  bool convex = false;
   bool quiet = false;
 };
 
@@ -103,6 +107,10 @@ std::optional<int> parse_analyze(const std::vector<std::string>& argv, Args& arg
         return usage_error("--feature-angle needs an angle in degrees, 0 < DEG < 180");
       }
       args.feature_angle = deg;
+    } else if (a == "--method") {
+      auto v = value();
+      if (!v || (*v != "eme" && *v != "convex")) return usage_error("--method needs eme or convex");
+      args.convex = *v == "convex";
     } else if (a == "--lvm-only") {
       args.lvm_only = true;
     } else if (a == "--global-occlusion") {
@@ -146,6 +154,9 @@ int run_analyze(const Args& args) {
   request.groups_path = args.groups;
   request.options.set_threads(args.threads);
   request.options.set_lvm_only(args.lvm_only);
+  if (args.convex) {
+    request.options.set_occlusion_method(gvm::v1::OCCLUSION_METHOD_CONVEX_DECOMPOSITION);
+  }
   if (args.feature_angle) request.options.set_feature_angle_degrees(*args.feature_angle);
 
   auto result = gvm::analyze(request);

@@ -21,7 +21,8 @@ std::string gvm_line(const v1::SphericalImage& gvm, const v1::SurfaceInfo& info)
     case v1::GVM_STATUS_EMPTY_VOID:
       return "GVM empty (faces of an internal void)";
     case v1::GVM_STATUS_GLOBAL_OCCLUSION_COMPUTED:
-      return "GVM: " + map_line(gvm) + "  (#GOM " + std::to_string(info.envelope_border_arcs()) +
+      return "GVM: " + map_line(gvm) + "  (#GOM " +
+             std::to_string(info.envelope_border_arcs() + info.pairwise_map_arcs()) +
              ", #Arrng " + std::to_string(info.arrangement_vertices()) + ")";
     case v1::GVM_STATUS_GLOBAL_OCCLUSION_NOT_COMPUTED:
       return "GVM not computed (--lvm-only); LVM(S + N_S) is an outer bound";

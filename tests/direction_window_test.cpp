@@ -68,14 +68,19 @@ bool window_may_meet(const DirectionWindow& w, const Face& f) {
 }
 
 std::string describe(const Face& f) {
+  auto point = [](std::string& s, const Point3& x) {
+    s += " (";  // appended piecewise: GCC 12 warns falsely on "(" + std::string
+    s += std::to_string(x.x);
+    s += ",";
+    s += std::to_string(x.y);
+    s += ",";
+    s += std::to_string(x.z);
+    s += ")";
+  };
   std::string s = "Q:";
-  for (const Point3& q : f.q) {
-    s += " (" + std::to_string(q.x) + "," + std::to_string(q.y) + "," + std::to_string(q.z) + ")";
-  }
+  for (const Point3& q : f.q) point(s, q);
   s += " P:";
-  for (const Point3& p : f.p) {
-    s += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.z) + ")";
-  }
+  for (const Point3& p : f.p) point(s, p);
   return s;
 }
 
@@ -187,7 +192,9 @@ TEST(DirectionWindow, RejectedFacesMissTheImage) {
       Face f;
       const int m = mode(rng);
       const int nq = count(rng), np = count(rng);
-      for (int i = 0; i < np; ++i) f.p.push_back({double(small(rng)), double(small(rng)), double(small(rng))});
+      for (int i = 0; i < np; ++i) {
+        f.p.push_back({double(small(rng)), double(small(rng)), double(small(rng))});
+      }
       bool exact = false;
       if (m <= 1) {
         // q0 = p0 + k s for a direction s of the image, exactly (m == 0) or perturbed.
@@ -288,8 +295,9 @@ TEST(DirectionWindow, EasyFacesAreDecided) {
     }
     // Quarter arc from +x to +y around +z: directions near -x - y (on its circle, beyond
     // both ends) and far above or below its circle are pruned.
-    EXPECT_FALSE(window_may_meet(DirectionWindow(quarter, kBound),
-                                 {box_points(rng, nq, {-95, -95, -3}, {-80, -80, 3}), {{0, 0, 0}}}));
+    EXPECT_FALSE(window_may_meet(
+        DirectionWindow(quarter, kBound),
+        {box_points(rng, nq, {-95, -95, -3}, {-80, -80, 3}), {{0, 0, 0}}}));
     EXPECT_FALSE(window_may_meet(DirectionWindow(quarter, kBound),
                                  {box_points(rng, nq, {20, 20, 60}, {40, 40, 100}), p}));
     // Mixed cells: d in [70, 90]^2 x [-105, -85], a cone of about 10 degrees, misses each

@@ -12,7 +12,6 @@
 namespace gvm::exact {
 namespace {
 
-ExactVec v(double x, double y, double z) { return ExactVec::from_point({x, y, z}); }
 ExactVec v(const Point3& p) { return ExactVec::from_point(p); }
 
 // Ground truth on integer coordinates: exact in __int128 for the degrees used below.
@@ -26,10 +25,19 @@ __int128 dot_i(const I3& a, const I3& b) { return a[0] * b[0] + a[1] * b[1] + a[
 I3 neg_i(const I3& a) { return {-a[0], -a[1], -a[2]}; }
 I3 sub_i(const I3& a, const I3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 bool zero_i(const I3& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; }
-Sign sign_i(__int128 x) { return x > 0 ? Sign::kPositive : (x < 0 ? Sign::kNegative : Sign::kZero); }
+Sign sign_i(__int128 x) {
+  return x > 0 ? Sign::kPositive : (x < 0 ? Sign::kNegative : Sign::kZero);
+}
 
 std::string str(const Point3& p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+  std::string s = "(";  // appended piecewise: GCC 12 warns falsely on "(" + std::string
+  s += std::to_string(p.x);
+  s += ", ";
+  s += std::to_string(p.y);
+  s += ", ";
+  s += std::to_string(p.z);
+  s += ")";
+  return s;
 }
 
 // Doubles of very different magnitudes (where the filter may give up), nearly parallel

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "sphere/region_union.h"
@@ -16,6 +17,8 @@ namespace {
 using exact::ExactVec;
 using D3 = std::array<double, 3>;
 using Polygon = std::vector<ExactVec>;  // convex, counter-clockwise seen from outside
+
+constexpr double kPi = 3.14159265358979323846;
 
 ExactVec v(double x, double y, double z) { return ExactVec::from_point({x, y, z}); }
 ExactVec v(const D3& d) { return ExactVec::from_point({d[0], d[1], d[2]}); }
@@ -120,9 +123,9 @@ std::vector<D3> samples(uint64_t seed, int random_count = 1500) {
     for (double y = -9.1; y <= 9.1; y += 0.31) out.push_back(unit_d({x, y, 8}));
   }
   for (int i = 1; i < 30; ++i) {
-    const double theta = M_PI * i / 30;
+    const double theta = kPi * i / 30;
     for (int j = 0; j < 40; ++j) {
-      const double phi = 2 * M_PI * (j + 0.37) / 40;
+      const double phi = 2 * kPi * (j + 0.37) / 40;
       out.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
                      std::cos(theta)});
     }
@@ -345,7 +348,7 @@ TEST(RegionUnion, EmptyInput) {
 
 // Random counter-clockwise triangle around +z (vertices on the plane z = 8).
 Polygon random_triangle(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> centre(-3, 3), radius(0.7, 3), angle(0, 2 * M_PI);
+  std::uniform_real_distribution<double> centre(-3, 3), radius(0.7, 3), angle(0, 2 * kPi);
   const double cx = centre(rng), cy = centre(rng);
   double a[3];
   for (double& t : a) t = angle(rng);

@@ -60,12 +60,19 @@ void fill_surface(const SolidMesh& mesh, std::span<const uint32_t> triangles,
   info->set_potential_occluders(
       static_cast<uint32_t>(input_faces(mesh, vis.occluders.potential).size()));
   info->set_seconds(seconds);
-  if (vis.statistics.envelope.tentative_faces > 0) {  // the envelope was computed
-    info->set_envelope_border_arcs(vis.statistics.envelope.border_edges);
-    info->set_arrangement_vertices(vis.statistics.arrangement_vertices);
-    info->set_envelope_faces(vis.statistics.envelope.envelope_faces);
-    info->set_envelope_patches(vis.statistics.envelope.patches);
-    info->set_occluded_boundary_arcs(vis.statistics.occluded_boundary_arcs);
+  const GlobalOcclusionStatistics& stats = vis.statistics;
+  if (stats.envelope.tentative_faces > 0) {
+    info->set_envelope_border_arcs(stats.envelope.border_edges);
+    info->set_envelope_faces(stats.envelope.envelope_faces);
+    info->set_envelope_patches(stats.envelope.patches);
+  }
+  if (stats.convex.pairs > 0) {
+    info->set_pairwise_maps(stats.convex.maps);
+    info->set_pairwise_map_arcs(stats.convex.map_arcs);
+  }
+  if (stats.envelope.tentative_faces > 0 || stats.convex.pairs > 0) {
+    info->set_arrangement_vertices(stats.arrangement_vertices);
+    info->set_occluded_boundary_arcs(stats.occluded_boundary_arcs);
   }
 }
 
@@ -172,6 +179,10 @@ StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
                           ? static_cast<int>(request.options.threads())
                           : tbb::this_task_arena::max_concurrency();
   timing->set_threads(static_cast<uint32_t>(threads));
+  const OcclusionMethod method =
+      request.options.occlusion_method() == v1::OCCLUSION_METHOD_CONVEX_DECOMPOSITION
+          ? OcclusionMethod::kConvexDecomposition
+          : OcclusionMethod::kEffectiveMinkowskiEnvelope;
   Progress progress(surfaces.size(), request.progress);
   tbb::task_arena arena(threads);
   arena.execute([&] {
@@ -181,7 +192,8 @@ StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
                           if (progress.cancelled()) return;
                           auto ts = Clock::now();
                           maps[i] = compute_surface_visibility(*part, surfaces[i],
-                                                               !request.options.lvm_only());
+                                                               !request.options.lvm_only(),
+                                                               method);
                           surface_seconds[i] = seconds_since(ts);
                           progress.tick();
                         }

@@ -194,11 +194,24 @@ void Arrangement::build(std::span<const ArrangementArc> input,
     }
   }
 
-  // Identify equal directions: candidate pairs of overlapping boxes, exact tests.
-  std::vector<Box> occ_boxes(occ.size());
-  for (size_t k = 0; k < occ.size(); ++k) occ_boxes[k] = point_box(exact::unit_estimate(occ[k]));
+  // Identify equal directions. Occurrences of one shared node are one direction (arcs
+  // that meet share their endpoint's node, often dozens of times); the distinct nodes
+  // are compared exactly when their boxes overlap.
   UnionFind same(occ.size());
-  for (auto [a, b] : BoxTree(occ_boxes).overlapping_pairs()) {
+  std::unordered_map<const void*, uint32_t> first_of_node;
+  std::vector<uint32_t> distinct;
+  std::vector<Box> occ_boxes;
+  for (uint32_t k = 0; k < occ.size(); ++k) {
+    auto [it, inserted] = first_of_node.try_emplace(occ[k].node(), k);
+    if (!inserted) {
+      same.unite(k, it->second);
+      continue;
+    }
+    distinct.push_back(k);
+    occ_boxes.push_back(point_box(exact::unit_estimate(occ[k])));
+  }
+  for (auto [i, j] : BoxTree(occ_boxes).overlapping_pairs()) {
+    const uint32_t a = distinct[i], b = distinct[j];
     if (same.find(a) != same.find(b) && exact::same_direction(occ[a], occ[b])) same.unite(a, b);
   }
   std::vector<uint32_t> vertex_of(occ.size(), UINT32_MAX), vertex_of_root(occ.size(), UINT32_MAX);

@@ -4,15 +4,15 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <unordered_map>
-#include <chrono>
-
-#include <tbb/parallel_for.h>
 
 #include "sphere/arrangement.h"
-#include "sphere/region_union.h"
+#include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
+#include "visibility/effective_minkowski_envelope.h"
+#include "visibility/occluded_directions.h"
 #include "visibility/occluder_beam.h"
 
 namespace gvm {
@@ -24,7 +24,7 @@ using sphere::ArrangementArc;
 using sphere::ArrangementPoint;
 
 constexpr int kLvm = 0;        // layer of LVM(S + N_S): coverage 1 inside its 2-cells
-constexpr int kOcclusion = 1;  // layer of the projected envelope: number of faces over u
+constexpr int kOcclusion = 1;  // layer of the closure of the occluded directions
 
 // The vertices q - p of the sum, each built once: arcs that share an endpoint then share
 // its node, which lets the exact predicates see zeros by construction.
@@ -104,44 +104,90 @@ bool face_covers(const std::vector<ExactVec>& v, const ExactVec& r) {
   return true;
 }
 
-// closure{coverage > 0} of the projected envelope: faces in groups of nearby directions
-// (Morton order of a vertex direction), the positive region of each group's border
-// chain, then their union.
-sphere::Region occluded_region(const SumVertices& sum, const std::vector<EnvelopeFace>& faces,
-                               const std::vector<std::vector<ExactVec>>& face_vertices,
-                               const ExactVec& r) {
-  constexpr size_t kGroupFaces = 128;
-  auto morton = [](const std::array<double, 3>& u) {
-    uint64_t code = 0;
-    for (int bit = 9; bit >= 0; --bit) {
-      for (int i = 0; i < 3; ++i) {
-        const auto cell = static_cast<uint64_t>(std::clamp((u[i] + 1) * 512, 0.0, 1023.0));
-        code = code << 1 | ((cell >> bit) & 1);
-      }
-    }
-    return code;
-  };
-  std::vector<std::pair<uint64_t, uint32_t>> order;
-  for (uint32_t f = 0; f < faces.size(); ++f) {
-    order.push_back({morton(exact::unit_estimate(face_vertices[f][0]).unit), f});
+// The closed occluded region and the reference direction it was labelled from.
+struct Occlusion {
+  sphere::Region region;
+  ExactVec reference;
+};
+
+// The closure of the occluded directions by the effective Minkowski envelope (paper
+// Sec. 4): the envelope's faces are the cells, a group's arcs its border chain.
+Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
+                                  std::span<const uint32_t> o, const DirectionWindow& window,
+                                  std::vector<ExactVec>& circles,
+                                  const std::vector<ExactVec>& points,
+                                  GlobalOcclusionStatistics* stats) {
+  const EffectiveMinkowskiEnvelope eme =
+      compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true, &window);
+  spdlog::debug("global occlusion: |S| {} |O| {}: {} tentative faces ({} outside the LVM), {} kept, "
+                "{} envelope faces, {} patches, {} border arcs",
+                s.size(), o.size(), eme.statistics.tentative_faces, eme.statistics.outside_window,
+                eme.statistics.kept_faces, eme.statistics.envelope_faces, eme.statistics.patches,
+                eme.statistics.border_edges);
+  if (stats) stats->envelope = eme.statistics;
+  SumVertices sum(mesh);
+  std::vector<std::vector<ExactVec>> faces;
+  for (const EnvelopeFace& f : eme.faces) {
+    std::vector<ExactVec> v;
+    for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
+    for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
+    faces.push_back(std::move(v));
   }
-  std::sort(order.begin(), order.end());
-  std::vector<sphere::Region> groups((order.size() + kGroupFaces - 1) / kGroupFaces);
-  tbb::parallel_for(size_t{0}, groups.size(), [&](size_t g) {
-    std::vector<EnvelopeFace> members;
-    int covering = 0;
-    for (size_t k = g * kGroupFaces; k < std::min(order.size(), (g + 1) * kGroupFaces); ++k) {
-      members.push_back(faces[order[k].second]);
-      covering += face_covers(face_vertices[order[k].second], r);
-    }
+  const ExactVec r = generic_direction(circles, points);
+  OccludingCells cells;
+  cells.count = faces.size();
+  cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[i][0]).unit; };
+  cells.boundary = [&](std::span<const uint32_t> members) {
+    std::vector<EnvelopeFace> group;
+    for (uint32_t i : members) group.push_back(eme.faces[i]);
     std::vector<ArrangementArc> arcs;
-    for (const EnvelopeBorderEdge& e : border_chain(members)) {
+    for (const EnvelopeBorderEdge& e : border_chain(group)) {
       const ExactVec &a = sum.at(e.q0, e.p0), &b = sum.at(e.q1, e.p1);
       arcs.push_back({a, b, exact::cross(a, b), 0, e.multiplicity});
     }
-    groups[g] = sphere::positive_region(arcs, r, covering);
-  });
-  return sphere::region_union(std::move(groups), r);
+    return arcs;
+  };
+  cells.covers_reference = [&](uint32_t i) { return face_covers(faces[i], r); };
+  return {occluded_directions(cells, r), r};
+}
+
+// The same closure by convex decomposition: the pairwise occlusion maps are the cells.
+Occlusion convex_decomposition_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
+                                         std::span<const uint32_t> o, const DirectionWindow& window,
+                                         std::vector<ExactVec>& circles,
+                                         const std::vector<ExactVec>& points,
+                                         GlobalOcclusionStatistics* stats) {
+  ConvexDecompositionStatistics convex;
+  const std::vector<sphere::SphericalImage> maps = pairwise_occlusion_maps(mesh, s, o, &window, &convex);
+  spdlog::debug("global occlusion: |S| {} |O| {}: {} pairs ({} outside the LVM), {} maps with {} arcs",
+                s.size(), o.size(), convex.pairs, convex.outside_window, convex.maps, convex.map_arcs);
+  if (stats) stats->convex = convex;
+  for (const sphere::SphericalImage& m : maps) {
+    for (const sphere::Face& f : m.faces()) {
+      for (const sphere::Arc& a : f.loops[0].arcs) circles.push_back(a.normal);
+    }
+  }
+  const ExactVec r = generic_direction(circles, points);
+  OccludingCells cells;
+  cells.count = maps.size();
+  cells.direction = [&](uint32_t i) {
+    const auto& faces = maps[i].faces();
+    return exact::unit_estimate(faces.empty() ? r : faces[0].loops[0].arcs[0].end).unit;
+  };
+  cells.boundary = [&](std::span<const uint32_t> members) {
+    std::vector<ArrangementArc> arcs;
+    for (uint32_t i : members) {
+      for (const sphere::Face& f : maps[i].faces()) {
+        for (const sphere::Arc& arc : f.loops[0].arcs) {
+          std::vector<ExactVec> v = sphere::split_arc(arc);
+          for (size_t k = 0; k + 1 < v.size(); ++k) arcs.push_back({v[k], v[k + 1], arc.normal, 0, 1});
+        }
+      }
+    }
+    return arcs;
+  };
+  cells.covers_reference = [&](uint32_t i) { return maps[i].contains(r); };
+  return {occluded_directions(cells, r), r};
 }
 
 }  // namespace
@@ -149,42 +195,26 @@ sphere::Region occluded_region(const SumVertices& sum, const std::vector<Envelop
 sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
                                              std::span<const uint32_t> o,
                                              const sphere::SphericalImage& lvm,
+                                             OcclusionMethod method,
                                              GlobalOcclusionStatistics* stats) {
   if (lvm.is_empty() || o.empty()) return lvm;
   const std::vector<uint32_t> beam = occluders_in_beam(mesh, s, o, lvm);
   if (stats) stats->occluders_in_beam = beam.size();
   if (beam.empty()) return lvm;
   const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
-  const EffectiveMinkowskiEnvelope eme =
-      compute_effective_minkowski_envelope(mesh, s, beam, /*keep_faces=*/true, &window);
-
-  spdlog::debug("global occlusion: |S| {} |O| {} ({} in the beam): {} tentative ({} outside the LVM), {} kept, {} envelope faces, {} "
-                "patches, {} border arcs",
-                s.size(), o.size(), beam.size(), eme.statistics.tentative_faces, eme.statistics.outside_window, eme.statistics.kept_faces,
-                eme.statistics.envelope_faces, eme.statistics.patches,
-                eme.statistics.border_edges);
-  if (stats) stats->envelope = eme.statistics;
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   add_lvm(lvm, arcs, points);
 
-  // The reference direction: on no circle of the LVM, of any face edge or of the points.
-  std::vector<std::vector<ExactVec>> face_vertices;
-  std::vector<ExactVec> circles;
+  // The reference direction lies on no circle of the LVM or of any cell, and on no point.
+  std::vector<ExactVec> circles, point_dirs;
   for (const ArrangementArc& a : arcs) circles.push_back(a.normal);
-  SumVertices sum(mesh);
-  for (const EnvelopeFace& f : eme.faces) {
-    std::vector<ExactVec> v;
-    for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
-    for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
-    face_vertices.push_back(std::move(v));
-  }
-  std::vector<ExactVec> point_dirs;
   for (const auto& p : points) point_dirs.push_back(p.p);
-  const ExactVec r = generic_direction(circles, point_dirs);
-
   const auto union_start = std::chrono::steady_clock::now();
-  const sphere::Region occluded = occluded_region(sum, eme.faces, face_vertices, r);
+  const auto [occluded, r] =
+      method == OcclusionMethod::kEffectiveMinkowskiEnvelope
+          ? envelope_occlusion(mesh, s, beam, window, circles, point_dirs, stats)
+          : convex_decomposition_occlusion(mesh, s, beam, window, circles, point_dirs, stats);
   spdlog::debug("global occlusion: closure of the occluded directions: {} boundary arcs, {:.2f} s",
                 occluded.boundary.size(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - union_start).count());

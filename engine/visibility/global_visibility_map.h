@@ -10,14 +10,23 @@
 
 #include "gvm/mesh.h"
 #include "sphere/spherical_image.h"
+#include "visibility/convex_decomposition.h"
 #include "visibility/effective_minkowski_envelope.h"
 
 namespace gvm {
 
+// How the occluded directions Phi(O_S + (-S)) are produced; the rest (exact arrangement,
+// unions, non-regularized difference) is shared, so both give the same GVM.
+enum class OcclusionMethod {
+  kEffectiveMinkowskiEnvelope,  // paper Sec. 4
+  kConvexDecomposition,         // pairwise occlusion maps (paper's reference [18])
+};
+
 struct GlobalOcclusionStatistics {
-  uint64_t occluders_in_beam = 0;     // faces of O_S that can meet S near the LVM
-  EnvelopeStatistics envelope;
-  uint64_t occluded_boundary_arcs = 0;  // boundary of the closure of Phi(O_S + (-S))
+  uint64_t occluders_in_beam = 0;       // faces of O_S that can meet S near the LVM
+  EnvelopeStatistics envelope;           // with the envelope
+  ConvexDecompositionStatistics convex;  // with convex decomposition
+  uint64_t occluded_boundary_arcs = 0;   // boundary of the closure of Phi(O_S + (-S))
   // #Arrng in the paper's tables: vertices of every arrangement built (the unions and
   // the final overlay with the LVM).
   uint64_t arrangement_vertices = 0;
@@ -25,6 +34,8 @@ struct GlobalOcclusionStatistics {
 
 sphere::SphericalImage global_visibility_map(
     const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o,
-    const sphere::SphericalImage& lvm, GlobalOcclusionStatistics* stats = nullptr);
+    const sphere::SphericalImage& lvm,
+    OcclusionMethod method = OcclusionMethod::kEffectiveMinkowskiEnvelope,
+    GlobalOcclusionStatistics* stats = nullptr);
 
 }  // namespace gvm

@@ -21,7 +21,7 @@ bool touches_void(const SolidMesh& mesh, std::span<const uint32_t> s) {
 }  // namespace
 
 SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const uint32_t> s,
-                                             bool global_occlusion) {
+                                             bool global_occlusion, OcclusionMethod method) {
   const SolidMesh& mesh = part.mesh();
   SurfaceVisibility out;
   out.occluders.neighbor = part.neighbor_occluders(s);
@@ -52,7 +52,8 @@ SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const u
     out.kind = GvmKind::kExactNoPotentialOccluders;
     out.gvm = out.lvm;
   } else if (global_occlusion) {
-    out.gvm = global_visibility_map(mesh, s, out.occluders.potential, out.lvm, &out.statistics);
+    out.gvm = global_visibility_map(mesh, s, out.occluders.potential, out.lvm, method,
+                                    &out.statistics);
     out.kind = GvmKind::kGlobalOcclusionComputed;
   } else {
     out.kind = GvmKind::kGlobalOcclusionNotComputed;

@@ -29,8 +29,9 @@ struct SurfaceVisibility {
 };
 
 // S is a set of triangles of the part (ascending, unique). With `global_occlusion`, the
-// occlusion by O_S is computed by the effective Minkowski envelope.
-SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const uint32_t> s,
-                                             bool global_occlusion = false);
+// occlusion by O_S is computed too, by `method`.
+SurfaceVisibility compute_surface_visibility(
+    const Part& part, std::span<const uint32_t> s, bool global_occlusion = false,
+    OcclusionMethod method = OcclusionMethod::kEffectiveMinkowskiEnvelope);
 
 }  // namespace gvm

@@ -3,7 +3,7 @@
 //
 //   gvm_oracle_sweep PART... [--directions N] [--margin DEG] [--max-features K] [--seed S]
 //                    [--feature ID]... [--region ID]... [--no-features] [--no-regions]
-//                    [--max-points P] [--max-grid G] [--probe x,y,z]... [--negate] [--verbose]
+//                    [--max-points P] [--max-grid G] [--method eme|convex] [--probe x,y,z]... [--negate] [--verbose]
 //
 // For every feature and every concave region S of each part, N random directions u
 // uniform on the sphere and N more within 10 degrees of a corner of the GVM or the LVM
@@ -226,6 +226,7 @@ struct Options {
   bool features = true, regions = true;
   std::size_t max_points = 2000;
   int max_grid = 8;
+  gvm::OcclusionMethod method = gvm::OcclusionMethod::kEffectiveMinkowskiEnvelope;
   std::vector<Vec> probes;
   bool negate = false;
   bool verbose = false;
@@ -235,7 +236,8 @@ void usage() {
   std::fprintf(stderr,
                "usage: gvm_oracle_sweep PART... [--directions N] [--margin DEG] "
                "[--max-features K] [--seed S] [--feature ID]... [--region ID]... "
-               "[--no-features] [--no-regions] [--max-points P] [--max-grid G] [--probe x,y,z]... "
+               "[--no-features] [--no-regions] [--max-points P] [--max-grid G] [--method eme|convex] "
+               "[--probe x,y,z]... "
                "[--negate] [--verbose]\n");
 }
 
@@ -338,7 +340,7 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
     std::printf("  %s |S|=%zu: computing GVM...\n", s.label.c_str(), s.triangles.size());
     std::fflush(stdout);
     const auto t0 = std::chrono::steady_clock::now();
-    gvm::SurfaceVisibility vis = gvm::compute_surface_visibility(*part, s.triangles, true);
+    gvm::SurfaceVisibility vis = gvm::compute_surface_visibility(*part, s.triangles, true, opt.method);
     const double gvm_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!vis.gvm) {
@@ -500,6 +502,15 @@ int main(int argc, char** argv) {
     else if (a == "--no-regions") opt.regions = false;
     else if (a == "--max-points") opt.max_points = std::stoul(next());
     else if (a == "--max-grid") opt.max_grid = std::stoi(next());
+    else if (a == "--method") {
+      const std::string m = next();
+      if (m != "eme" && m != "convex") {
+        usage();
+        return 2;
+      }
+      opt.method = m == "convex" ? gvm::OcclusionMethod::kConvexDecomposition
+                                 : gvm::OcclusionMethod::kEffectiveMinkowskiEnvelope;
+    }
     else if (a == "--negate") opt.negate = true;
     else if (a == "--verbose") opt.verbose = true;
     else if (a == "--probe") {

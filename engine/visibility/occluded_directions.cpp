@@ -1,0 +1,44 @@
+#include "visibility/occluded_directions.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace gvm {
+namespace {
+
+constexpr size_t kGroupCells = 128;
+
+// Morton order of a unit vector on a 1024^3 grid: nearby directions, nearby codes.
+uint64_t morton(const std::array<double, 3>& u) {
+  uint64_t code = 0;
+  for (int bit = 9; bit >= 0; --bit) {
+    for (int i = 0; i < 3; ++i) {
+      const auto cell = static_cast<uint64_t>(std::clamp((u[i] + 1) * 512, 0.0, 1023.0));
+      code = code << 1 | ((cell >> bit) & 1);
+    }
+  }
+  return code;
+}
+
+}  // namespace
+
+sphere::Region occluded_directions(const OccludingCells& cells, const exact::ExactVec& reference) {
+  std::vector<std::pair<uint64_t, uint32_t>> order(cells.count);
+  tbb::parallel_for(uint32_t{0}, static_cast<uint32_t>(cells.count),
+                    [&](uint32_t i) { order[i] = {morton(cells.direction(i)), i}; });
+  std::sort(order.begin(), order.end());
+  std::vector<sphere::Region> groups((order.size() + kGroupCells - 1) / kGroupCells);
+  tbb::parallel_for(size_t{0}, groups.size(), [&](size_t g) {
+    std::vector<uint32_t> members;
+    int covering = 0;
+    for (size_t k = g * kGroupCells; k < std::min(order.size(), (g + 1) * kGroupCells); ++k) {
+      members.push_back(order[k].second);
+      covering += cells.covers_reference(order[k].second);
+    }
+    groups[g] = sphere::positive_region(cells.boundary(members), reference, covering);
+  });
+  return sphere::region_union(std::move(groups), reference);
+}
+
+}  // namespace gvm
