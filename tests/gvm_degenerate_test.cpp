@@ -1,4 +1,5 @@
-// Exact GVMs of the degenerate machining features users care most about.
+// Exact GVMs of the degenerate machining features users care most about, by the
+// envelope; the convex-decomposition baseline must give the same GVM for each of them.
 #include <gtest/gtest.h>
 
 #include "exact/exact_vec.h"
@@ -24,6 +25,20 @@ Built build(RawMesh raw) {
   return {std::move(raw), std::move(*part)};
 }
 
+// The visibility of S by the envelope, after checking that convex decomposition gives
+// the same GVM, cell for cell.
+SurfaceVisibility visibility(const Part& part, std::span<const uint32_t> s) {
+  SurfaceVisibility eme = compute_surface_visibility(part, s, true);
+  SurfaceVisibility convex =
+      compute_surface_visibility(part, s, true, OcclusionMethod::kConvexDecomposition);
+  EXPECT_EQ(eme.gvm.has_value(), convex.gvm.has_value());
+  if (eme.gvm && convex.gvm) {
+    EXPECT_TRUE(*eme.gvm == *convex.gvm)
+        << "envelope: " << eme.gvm->description() << "\nconvex:   " << convex.gvm->description();
+  }
+  return eme;
+}
+
 // The rotation the test parts apply, for expected directions.
 ExactVec rotated(const test::TestPartOptions& o, double x, double y, double z) {
   Point3 p{x, y, z};
@@ -38,7 +53,7 @@ TEST_P(Variants, PocketWallSeesAnArcUpToTheOppositeRim) {
   const auto o = GetParam();
   Built b = build(test::pocket_part(o));
   auto s = test::triangles_of(b.part.mesh(), b.raw, {"wall_x0"});
-  SurfaceVisibility vis = compute_surface_visibility(b.part, s, true);
+  SurfaceVisibility vis = visibility(b.part, s);
   ASSERT_TRUE(vis.gvm.has_value());
   const sphere::SphericalImage& g = *vis.gvm;
   EXPECT_EQ(g.dimension(), 1) << g.description();
@@ -55,7 +70,7 @@ TEST_P(Variants, PocketWallSeesAnArcUpToTheOppositeRim) {
 sphere::SphericalImage gvm_of(const Built& b, std::initializer_list<std::string> names) {
   auto s = test::triangles_of(b.part.mesh(), b.raw, names);
   EXPECT_FALSE(s.empty());
-  SurfaceVisibility vis = compute_surface_visibility(b.part, s, true);
+  SurfaceVisibility vis = visibility(b.part, s);
   EXPECT_TRUE(vis.gvm.has_value());
   return vis.gvm ? *vis.gvm : sphere::SphericalImage{};
 }
@@ -183,14 +198,14 @@ TEST_P(Variants, TwoDisjointPocketsTogetherAndAFaceWithoutOccluders) {
   const auto o = GetParam();
   Built b = build(test::two_pockets_part(o));
   auto s = test::triangles_of(b.part.mesh(), b.raw, {"floor_0", "floor_1"});
-  SurfaceVisibility vis = compute_surface_visibility(b.part, s, true);
+  SurfaceVisibility vis = visibility(b.part, s);
   ASSERT_TRUE(vis.gvm.has_value());
   EXPECT_TRUE(*vis.gvm == sphere::SphericalImage::point(rotated(o, 0, 0, 1)))
       << vis.gvm->description();
   // The step floor has no potential occluders: its GVM is its LVM, exactly.
   Built step = build(test::step_part(o));
   auto floor = test::triangles_of(step.part.mesh(), step.raw, {"step_floor"});
-  SurfaceVisibility fv = compute_surface_visibility(step.part, floor, true);
+  SurfaceVisibility fv = visibility(step.part, floor);
   EXPECT_EQ(fv.kind, GvmKind::kExactNoPotentialOccluders);
   EXPECT_TRUE(fv.occluders.potential.empty());
   ASSERT_TRUE(fv.gvm.has_value());
