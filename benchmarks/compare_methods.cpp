@@ -1,0 +1,224 @@
+// gvm_compare: the effective Minkowski envelope against convex decomposition, the way the
+// paper's Tables 1-2 compare them, on real parts.
+//
+//   gvm_compare [PART...] [--largest K] [--all-features] [--no-convex]
+//               [--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE]
+//
+// Without parts: every part of $GVM_SHARED_DIR/data/parts (default ../shared). For each
+// part, the K (default 3) features with the largest |S| * |O_S| (or every feature), each
+// computed by both methods: #S, #O_S, #GOM, #Arrng, #GVM, seconds and peak memory, and
+// whether the two GVMs are equal. Convex decomposition is skipped on features with more
+// than N pairs (default: no limit). Prints a table; --csv and --json write the same rows
+// (JSON: protobuf's mapping of gvm.v1.Comparison).
+#include <google/protobuf/util/json_util.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "gvm/mesh.h"
+#include "gvm/part.h"
+#include "gvm/v1/benchmark.pb.h"
+#include "visibility/surface_visibility.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  std::vector<std::string> parts;
+  size_t largest = 3;
+  bool all_features = false, convex = true;
+  uint64_t convex_max_pairs = UINT64_MAX;
+  unsigned threads = 0;
+  std::string csv, json;
+};
+
+// Peak resident memory of the process (VmHWM), reset before each run so that it measures
+// that run (Linux: writing 5 to clear_refs resets the high-water mark).
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024;
+  }
+  return 0;
+}
+
+uint64_t gvm_size(const gvm::sphere::SphericalImage& g) {
+  uint64_t n = g.points().size() + g.curves().size();
+  for (const auto& f : g.faces()) {
+    for (const auto& loop : f.loops) n += loop.arcs.size();
+  }
+  return n;
+}
+
+gvm::v1::MethodRun run(const gvm::Part& part, const std::vector<uint32_t>& s,
+                       gvm::OcclusionMethod method, gvm::sphere::SphericalImage* gvm_out) {
+  reset_peak_memory();
+  const auto t = Clock::now();
+  const gvm::SurfaceVisibility vis = gvm::compute_surface_visibility(part, s, true, method);
+  gvm::v1::MethodRun r;
+  r.set_seconds(std::chrono::duration<double>(Clock::now() - t).count());
+  r.set_peak_mb(peak_memory_mb());
+  const bool envelope = method == gvm::OcclusionMethod::kEffectiveMinkowskiEnvelope;
+  r.set_method(envelope ? gvm::v1::OCCLUSION_METHOD_EFFECTIVE_MINKOWSKI_ENVELOPE
+                        : gvm::v1::OCCLUSION_METHOD_CONVEX_DECOMPOSITION);
+  r.set_gom(envelope ? vis.statistics.envelope.border_edges : vis.statistics.convex.map_arcs);
+  r.set_arrangement_vertices(vis.statistics.arrangement_vertices);
+  if (vis.gvm) {
+    r.set_gvm_size(gvm_size(*vis.gvm));
+    *gvm_out = *vis.gvm;
+  }
+  return r;
+}
+
+std::vector<std::string> default_parts() {
+  const char* env = std::getenv("GVM_SHARED_DIR");
+  const fs::path dir = fs::path(env ? env : "../shared") / "data" / "parts";
+  std::vector<std::string> parts;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string ext = e.path().extension().string();
+    if (ext == ".stl" || ext == ".STL" || ext == ".off" || ext == ".obj" || ext == ".ply") {
+      parts.push_back(e.path().string());
+    }
+  }
+  std::sort(parts.begin(), parts.end());
+  return parts;
+}
+
+void print_row(const gvm::v1::SurfaceComparison& c) {
+  auto cells = [](const gvm::v1::MethodRun& r) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%9llu %10llu %6llu %9.3f %8.0f",
+                  static_cast<unsigned long long>(r.gom()),
+                  static_cast<unsigned long long>(r.arrangement_vertices()),
+                  static_cast<unsigned long long>(r.gvm_size()), r.seconds(), r.peak_mb());
+    return std::string(buf);
+  };
+  char ratio[32] = "-";
+  if (c.has_convex()) std::snprintf(ratio, sizeof ratio, "%.1f", c.convex_over_envelope());
+  std::printf("%-34s %-8s %5u %6u | %s | %s | %7s %s\n", c.model().c_str(), c.surface().c_str(),
+              c.s(), c.o_s(), cells(c.envelope()).c_str(),
+              c.has_convex() ? cells(c.convex()).c_str() : "   (skipped)                                 ",
+              ratio, c.has_convex() ? (c.same_gvm() ? "same" : "DIFFERENT") : "");
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "gvm_compare: %s needs a value\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--largest") opt.largest = std::stoul(next());
+    else if (a == "--all-features") opt.all_features = true;
+    else if (a == "--no-convex") opt.convex = false;
+    else if (a == "--convex-max-pairs") opt.convex_max_pairs = std::stoull(next());
+    else if (a == "--threads") opt.threads = std::stoul(next());
+    else if (a == "--csv") opt.csv = next();
+    else if (a == "--json") opt.json = next();
+    else if (!a.empty() && a[0] == '-') {
+      std::fprintf(stderr,
+                   "usage: gvm_compare [PART...] [--largest K] [--all-features] [--no-convex] "
+                   "[--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE]\n");
+      return 2;
+    } else {
+      opt.parts.push_back(a);
+    }
+  }
+  if (opt.parts.empty()) opt.parts = default_parts();
+  const unsigned threads = opt.threads ? opt.threads : std::thread::hardware_concurrency();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+
+  gvm::v1::Comparison out;
+  out.set_threads(threads);
+  out.set_machine(std::to_string(std::thread::hardware_concurrency()) + " hardware threads");
+  std::printf("%-34s %-8s %5s %6s | %9s %10s %6s %9s %8s | %9s %10s %6s %9s %8s | %7s\n", "model",
+              "feature", "#S", "#O_S", "#GOM", "#Arrng", "#GVM", "EME s", "peak MB", "#GOM",
+              "#Arrng", "#GVM", "convex s", "peak MB", "ratio");
+  int differences = 0;
+  for (const std::string& path : opt.parts) {
+    auto solid = gvm::load_solid(path);
+    if (!solid.ok()) {
+      std::fprintf(stderr, "%s: %s\n", path.c_str(), solid.status().message().c_str());
+      return 2;
+    }
+    auto part = gvm::Part::analyze(std::move(*solid), gvm::PartOptions{});
+    if (!part.ok()) {
+      std::fprintf(stderr, "%s: %s\n", path.c_str(), part.status().message().c_str());
+      return 2;
+    }
+    struct Candidate {
+      const gvm::Feature* feature;
+      size_t o_s;
+    };
+    std::vector<Candidate> candidates;
+    for (const gvm::Feature& f : part->features()) {
+      const gvm::SurfaceVisibility occluders = gvm::compute_surface_visibility(*part, f.triangles, false);
+      candidates.push_back({&f, occluders.occluders.potential.size()});
+    }
+    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+      return a.feature->triangles.size() * a.o_s > b.feature->triangles.size() * b.o_s;
+    });
+    if (!opt.all_features && candidates.size() > opt.largest) candidates.resize(opt.largest);
+    for (const Candidate& c : candidates) {
+      gvm::v1::SurfaceComparison* row = out.add_surfaces();
+      row->set_model(fs::path(path).filename().string());
+      row->set_surface(c.feature->name);
+      row->set_s(static_cast<uint32_t>(c.feature->triangles.size()));
+      row->set_o_s(static_cast<uint32_t>(c.o_s));
+      gvm::sphere::SphericalImage eme_gvm, convex_gvm;
+      *row->mutable_envelope() = run(*part, c.feature->triangles,
+                                     gvm::OcclusionMethod::kEffectiveMinkowskiEnvelope, &eme_gvm);
+      if (opt.convex && uint64_t(row->s()) * row->o_s() <= opt.convex_max_pairs) {
+        *row->mutable_convex() = run(*part, c.feature->triangles,
+                                     gvm::OcclusionMethod::kConvexDecomposition, &convex_gvm);
+        row->set_same_gvm(eme_gvm == convex_gvm);
+        differences += !row->same_gvm();
+        row->set_convex_over_envelope(row->convex().seconds() /
+                                      std::max(row->envelope().seconds(), 1e-9));
+      }
+      print_row(*row);
+    }
+  }
+  if (!opt.csv.empty()) {
+    std::ofstream csv(opt.csv);
+    csv << "model,feature,s,o_s,method,gom,arrangement_vertices,gvm_size,seconds,peak_mb,same_gvm\n";
+    for (const auto& r : out.surfaces()) {
+      for (const auto* m : {&r.envelope(), &r.convex()}) {
+        if (m == &r.convex() && !r.has_convex()) continue;
+        csv << r.model() << ',' << r.surface() << ',' << r.s() << ',' << r.o_s() << ','
+            << (m == &r.envelope() ? "envelope" : "convex") << ',' << m->gom() << ','
+            << m->arrangement_vertices() << ',' << m->gvm_size() << ',' << m->seconds() << ','
+            << m->peak_mb() << ',' << (r.has_convex() ? (r.same_gvm() ? "1" : "0") : "") << '\n';
+      }
+    }
+  }
+  if (!opt.json.empty()) {
+    std::string text;
+    google::protobuf::util::JsonPrintOptions print;
+    print.add_whitespace = true;
+    (void)google::protobuf::util::MessageToJsonString(out, &text, print);
+    std::ofstream(opt.json) << text;
+  }
+  return differences ? 1 : 0;
+}
