@@ -113,10 +113,9 @@ struct Occlusion {
 // The closure of the occluded directions by the effective Minkowski envelope (paper
 // Sec. 4): the envelope's faces are the cells, a group's arcs its border chain.
 Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
-                                  std::span<const uint32_t> o, const DirectionWindow& window,
-                                  std::vector<ExactVec>& circles,
-                                  const std::vector<ExactVec>& points,
-                                  GlobalOcclusionStatistics* stats) {
+                             std::span<const uint32_t> o, const DirectionWindow& window,
+                             std::vector<ExactVec>& circles, const std::vector<ExactVec>& points,
+                             GlobalOcclusionStatistics* stats) {
   const EffectiveMinkowskiEnvelope eme =
       compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true, &window);
   spdlog::debug("global occlusion: |S| {} |O| {}: {} tentative faces ({} outside the LVM), {} kept, "
