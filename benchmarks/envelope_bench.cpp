@@ -30,7 +30,6 @@ namespace {
 
 using bench::RealFeature;
 using bench::real_feature;
-using bench::coordinate_bound;
 
 // Args: {window, keep_faces}. The envelope runs in parallel (TBB): timed in real time.
 void BM_EnvelopeRealFeature(benchmark::State& state) {

@@ -82,20 +82,6 @@ RealFeature load_real_feature() {
 
 }  // namespace
 
-double coordinate_bound(const SolidMesh& mesh, const std::vector<uint32_t>& a,
-                        const std::vector<uint32_t>& b) {
-  double bound = 0;
-  for (const auto* triangles : {&a, &b}) {
-    for (uint32_t t : *triangles) {
-      for (uint32_t v : mesh.triangles[t]) {
-        const Point3& p = mesh.points[v];
-        bound = std::max({bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-      }
-    }
-  }
-  return bound;
-}
-
 const RealFeature& real_feature() {
   static const RealFeature r = load_real_feature();
   return r;

@@ -29,8 +29,4 @@ struct RealFeature {
 // Loaded once, on first use.
 const RealFeature& real_feature();
 
-// The largest absolute coordinate of the vertices of two triangle sets (for the window).
-double coordinate_bound(const SolidMesh& mesh, const std::vector<uint32_t>& a,
-                        const std::vector<uint32_t>& b);
-
 }  // namespace gvm::bench

@@ -1,5 +1,6 @@
 #include "visibility/direction_window.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gvm {
@@ -64,6 +65,20 @@ void DirectionWindow::values(const Point3& x, double* out) const {
     const D3& m = normals_[k];
     out[k] = m[0] * x[0] + m[1] * x[1] + m[2] * x[2];
   }
+}
+
+double coordinate_bound(const SolidMesh& mesh, std::span<const uint32_t> a,
+                        std::span<const uint32_t> b) {
+  double bound = 0;
+  for (auto triangles : {a, b}) {
+    for (uint32_t t : triangles) {
+      for (uint32_t v : mesh.triangles[t]) {
+        const Point3& p = mesh.points[v];
+        bound = std::max({bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+      }
+    }
+  }
+  return bound;
 }
 
 bool DirectionWindow::may_meet(const double* q_max, const double* p_min) const {

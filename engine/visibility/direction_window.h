@@ -10,9 +10,12 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "gvm/geometry.h"
+#include "gvm/mesh.h"
 #include "sphere/spherical_image.h"
 
 namespace gvm {
@@ -36,5 +39,10 @@ class DirectionWindow {
   std::vector<size_t> cell_end_;  // half-spaces of cell c: [cell_end_[c - 1], cell_end_[c])
   double slack_ = 0;
 };
+
+// The largest absolute coordinate of the vertices of two sets of triangles: the
+// coordinate bound of a window used with their points.
+double coordinate_bound(const SolidMesh& mesh, std::span<const uint32_t> a,
+                        std::span<const uint32_t> b);
 
 }  // namespace gvm

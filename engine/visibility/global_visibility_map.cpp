@@ -81,20 +81,6 @@ ExactVec generic_direction(const std::vector<ExactVec>& circles,
   }
 }
 
-double coordinate_bound(const SolidMesh& mesh, std::span<const uint32_t> a,
-                        std::span<const uint32_t> b) {
-  double bound = 0;
-  for (auto triangles : {a, b}) {
-    for (uint32_t t : triangles) {
-      for (uint32_t v : mesh.triangles[t]) {
-        const Point3& p = mesh.points[v];
-        bound = std::max({bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-      }
-    }
-  }
-  return bound;
-}
-
 // A back-facing face projects to the convex polygon to the left of its edges (its
 // vertices run counter-clockwise around the outward normal, seen from outside).
 bool face_covers(const std::vector<ExactVec>& v, const ExactVec& r) {
