@@ -2,14 +2,17 @@
 // paper's Tables 1-2 compare them, on real parts.
 //
 //   gvm_compare [PART...] [--largest K] [--all-features] [--no-convex]
-//               [--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE]
+//               [--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE] [--svg FILE]
+//   gvm_compare --from-json FILE [--csv FILE] [--svg FILE]
 //
 // Without parts: every part of $GVM_SHARED_DIR/data/parts (default ../shared). For each
 // part, the K (default 3) features with the largest |S| * |O_S| (or every feature), each
 // computed by both methods: #S, #O_S, #GOM, #Arrng, #GVM, seconds and peak memory, and
 // whether the two GVMs are equal. Convex decomposition is skipped on features with more
 // than N pairs (default: no limit). Prints a table; --csv and --json write the same rows
-// (JSON: protobuf's mapping of gvm.v1.Comparison).
+// (JSON: protobuf's mapping of gvm.v1.Comparison); --svg plots seconds and #Arrng of both
+// methods against |S| * |O_S|. --from-json reads the rows of an earlier run instead of
+// computing them (to redraw the table, CSV or plot).
 #include <google/protobuf/util/json_util.h>
 #include <tbb/global_control.h>
 
@@ -19,6 +22,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <ostream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -26,6 +31,7 @@
 #include "gvm/mesh.h"
 #include "gvm/part.h"
 #include "gvm/v1/benchmark.pb.h"
+#include "support/comparison_plot.h"
 #include "visibility/surface_visibility.h"
 
 namespace {
@@ -39,8 +45,13 @@ struct Options {
   bool all_features = false, convex = true;
   uint64_t convex_max_pairs = UINT64_MAX;
   unsigned threads = 0;
-  std::string csv, json;
+  std::string csv, json, svg, from_json;
 };
+
+constexpr const char* kUsage =
+    "usage: gvm_compare [PART...] [--largest K] [--all-features] [--no-convex] "
+    "[--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE] [--svg FILE]\n"
+    "       gvm_compare --from-json FILE [--csv FILE] [--svg FILE]\n";
 
 // Peak resident memory of the process (VmHWM), reset before each run so that it measures
 // that run (Linux: writing 5 to clear_refs resets the high-water mark).
@@ -116,56 +127,25 @@ void print_row(const gvm::v1::SurfaceComparison& c) {
   std::fflush(stdout);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options opt;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "gvm_compare: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--largest") opt.largest = std::stoul(next());
-    else if (a == "--all-features") opt.all_features = true;
-    else if (a == "--no-convex") opt.convex = false;
-    else if (a == "--convex-max-pairs") opt.convex_max_pairs = std::stoull(next());
-    else if (a == "--threads") opt.threads = std::stoul(next());
-    else if (a == "--csv") opt.csv = next();
-    else if (a == "--json") opt.json = next();
-    else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr,
-                   "usage: gvm_compare [PART...] [--largest K] [--all-features] [--no-convex] "
-                   "[--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE]\n");
-      return 2;
-    } else {
-      opt.parts.push_back(a);
-    }
-  }
-  if (opt.parts.empty()) opt.parts = default_parts();
-  const unsigned threads = opt.threads ? opt.threads : std::thread::hardware_concurrency();
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-
-  gvm::v1::Comparison out;
-  out.set_threads(threads);
-  out.set_machine(std::to_string(std::thread::hardware_concurrency()) + " hardware threads");
+void print_header() {
   std::printf("%-34s %-8s %5s %6s | %9s %10s %6s %9s %8s | %9s %10s %6s %9s %8s | %7s\n", "model",
               "feature", "#S", "#O_S", "#GOM", "#Arrng", "#GVM", "EME s", "peak MB", "#GOM",
               "#Arrng", "#GVM", "convex s", "peak MB", "ratio");
-  int differences = 0;
+}
+
+// Both methods on the chosen features of every part, each row printed as it is done.
+// Returns false when a part cannot be read.
+bool compare(const Options& opt, gvm::v1::Comparison& out) {
   for (const std::string& path : opt.parts) {
     auto solid = gvm::load_solid(path);
     if (!solid.ok()) {
       std::fprintf(stderr, "%s: %s\n", path.c_str(), solid.status().message().c_str());
-      return 2;
+      return false;
     }
     auto part = gvm::Part::analyze(std::move(*solid), gvm::PartOptions{});
     if (!part.ok()) {
       std::fprintf(stderr, "%s: %s\n", path.c_str(), part.status().message().c_str());
-      return 2;
+      return false;
     }
     struct Candidate {
       const gvm::Feature* feature;
@@ -193,32 +173,117 @@ int main(int argc, char** argv) {
         *row->mutable_convex() = run(*part, c.feature->triangles,
                                      gvm::OcclusionMethod::kConvexDecomposition, &convex_gvm);
         row->set_same_gvm(eme_gvm == convex_gvm);
-        differences += !row->same_gvm();
         row->set_convex_over_envelope(row->convex().seconds() /
                                       std::max(row->envelope().seconds(), 1e-9));
       }
       print_row(*row);
     }
   }
-  if (!opt.csv.empty()) {
-    std::ofstream csv(opt.csv);
-    csv << "model,feature,s,o_s,method,gom,arrangement_vertices,gvm_size,seconds,peak_mb,same_gvm\n";
-    for (const auto& r : out.surfaces()) {
-      for (const auto* m : {&r.envelope(), &r.convex()}) {
-        if (m == &r.convex() && !r.has_convex()) continue;
-        csv << r.model() << ',' << r.surface() << ',' << r.s() << ',' << r.o_s() << ','
-            << (m == &r.envelope() ? "envelope" : "convex") << ',' << m->gom() << ','
-            << m->arrangement_vertices() << ',' << m->gvm_size() << ',' << m->seconds() << ','
-            << m->peak_mb() << ',' << (r.has_convex() ? (r.same_gvm() ? "1" : "0") : "") << '\n';
-      }
+  return true;
+}
+
+bool read_json(const std::string& path, gvm::v1::Comparison& out) {
+  std::ifstream in(path);
+  if (!in) {
+    std::fprintf(stderr, "gvm_compare: cannot read %s\n", path.c_str());
+    return false;
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto status = google::protobuf::util::JsonStringToMessage(text, &out);
+  if (!status.ok()) {
+    std::fprintf(stderr, "gvm_compare: %s is not a gvm.v1.Comparison: %s\n", path.c_str(),
+                 std::string(status.message()).c_str());
+    return false;
+  }
+  return true;
+}
+
+void write_csv(const gvm::v1::Comparison& out, std::ostream& csv) {
+  csv << "model,feature,s,o_s,method,gom,arrangement_vertices,gvm_size,seconds,peak_mb,same_gvm\n";
+  for (const auto& r : out.surfaces()) {
+    for (const auto* m : {&r.envelope(), &r.convex()}) {
+      if (m == &r.convex() && !r.has_convex()) continue;
+      csv << r.model() << ',' << r.surface() << ',' << r.s() << ',' << r.o_s() << ','
+          << (m == &r.envelope() ? "envelope" : "convex") << ',' << m->gom() << ','
+          << m->arrangement_vertices() << ',' << m->gvm_size() << ',' << m->seconds() << ','
+          << m->peak_mb() << ',' << (r.has_convex() ? (r.same_gvm() ? "1" : "0") : "") << '\n';
     }
   }
-  if (!opt.json.empty()) {
+}
+
+// Writes what was asked for; false when a file cannot be written.
+bool write_outputs(const Options& opt, const gvm::v1::Comparison& out) {
+  bool ok = true;
+  auto write = [&](const std::string& path, auto&& body) {
+    if (path.empty()) return;
+    std::ofstream file(path);
+    body(file);
+    if (!file) {
+      std::fprintf(stderr, "gvm_compare: cannot write %s\n", path.c_str());
+      ok = false;
+    }
+  };
+  write(opt.csv, [&](std::ostream& f) { write_csv(out, f); });
+  write(opt.json, [&](std::ostream& f) {
     std::string text;
     google::protobuf::util::JsonPrintOptions print;
     print.add_whitespace = true;
     (void)google::protobuf::util::MessageToJsonString(out, &text, print);
-    std::ofstream(opt.json) << text;
+    f << text;
+  });
+  write(opt.svg, [&](std::ostream& f) { f << gvm::bench::comparison_plot_svg(out); });
+  return ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "gvm_compare: %s needs a value\n%s", a.c_str(), kUsage);
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--largest") opt.largest = std::stoul(next());
+    else if (a == "--all-features") opt.all_features = true;
+    else if (a == "--no-convex") opt.convex = false;
+    else if (a == "--convex-max-pairs") opt.convex_max_pairs = std::stoull(next());
+    else if (a == "--threads") opt.threads = std::stoul(next());
+    else if (a == "--csv") opt.csv = next();
+    else if (a == "--json") opt.json = next();
+    else if (a == "--svg") opt.svg = next();
+    else if (a == "--from-json") opt.from_json = next();
+    else if (!a.empty() && a[0] == '-') {
+      std::fprintf(stderr, "gvm_compare: unknown option %s\n%s", a.c_str(), kUsage);
+      return 2;
+    } else {
+      opt.parts.push_back(a);
+    }
   }
-  return differences ? 1 : 0;
+  gvm::v1::Comparison out;
+  if (!opt.from_json.empty()) {
+    if (!opt.parts.empty()) {
+      std::fprintf(stderr, "gvm_compare: --from-json takes no parts\n%s", kUsage);
+      return 2;
+    }
+    if (!read_json(opt.from_json, out)) return 2;
+    print_header();
+    for (const auto& row : out.surfaces()) print_row(row);
+  } else {
+    if (opt.parts.empty()) opt.parts = default_parts();
+    const unsigned threads = opt.threads ? opt.threads : std::thread::hardware_concurrency();
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    out.set_threads(threads);
+    out.set_machine(std::to_string(std::thread::hardware_concurrency()) + " hardware threads");
+    print_header();
+    if (!compare(opt, out)) return 2;
+  }
+  if (!write_outputs(opt, out)) return 2;
+  const bool all_same = std::all_of(out.surfaces().begin(), out.surfaces().end(),
+                                    [](const auto& r) { return !r.has_convex() || r.same_gvm(); });
+  return all_same ? 0 : 1;
 }
