@@ -13,6 +13,7 @@
 #include <string>
 
 #include "gvm/v1/gvm.pb.h"
+#include "support/scratch_dir.h"
 
 namespace {
 
@@ -36,12 +37,6 @@ CliRun run(const std::string& args) {
 }
 
 std::string shared(const std::string& rel) { return std::string(GVM_SHARED_DIR) + "/" + rel; }
-
-fs::path temp_dir() {
-  fs::path dir = fs::temp_directory_path() / ("gvm_cli_test_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 gvm::v1::Analysis parse(const std::string& json) {
   gvm::v1::Analysis a;
@@ -80,7 +75,7 @@ TEST(Cli, MissingAndBrokenPartsAreRejectedWithTheProblemNamed) {
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.out.find("/nonexistent/part.stl"), std::string::npos) << missing.out;
 
-  fs::path dir = temp_dir();
+  const fs::path& dir = gvm::test::scratch_dir();
   fs::path json = dir / "flipped.json";
   CliRun flipped = run("analyze " + shared("data/bad/prusa_endstop-block_FLIPPED.off") + " --json " +
                     json.string());
@@ -94,7 +89,7 @@ TEST(Cli, MissingAndBrokenPartsAreRejectedWithTheProblemNamed) {
 }
 
 TEST(Cli, ReportAndJsonOnARealPart) {
-  fs::path dir = temp_dir();
+  const fs::path& dir = gvm::test::scratch_dir();
   fs::path json = dir / "plug.json";
   CliRun r = run("analyze " + shared("data/parts/prusa_plug-aligner.stl") + " --json " + json.string());
   ASSERT_EQ(r.status, 0) << r.out;
@@ -123,7 +118,7 @@ TEST(Cli, ReportAndJsonOnARealPart) {
 }
 
 TEST(Cli, LvmOnlyLeavesTheGlobalOcclusionOut) {
-  fs::path dir = temp_dir();
+  const fs::path& dir = gvm::test::scratch_dir();
   fs::path json = dir / "plug-lvm.json";
   CliRun r = run("analyze " + shared("data/parts/prusa_plug-aligner.stl") + " --lvm-only --json " +
                  json.string());
@@ -143,7 +138,7 @@ TEST(Cli, LvmOnlyLeavesTheGlobalOcclusionOut) {
 }
 
 TEST(Cli, SameJsonWithOneAndTwoThreads) {
-  fs::path dir = temp_dir();
+  const fs::path& dir = gvm::test::scratch_dir();
   std::string part = shared("data/parts/trimesh_20mm-xyz-cube.stl");
   ASSERT_EQ(run("analyze " + part + " -q --threads 1 --json " + (dir / "t1.json").string()).status, 0);
   ASSERT_EQ(run("analyze " + part + " -q --threads 2 --json " + (dir / "t2.json").string()).status, 0);

@@ -11,6 +11,7 @@
 #include "gvm/mesh.h"
 #include "support/assertions.h"
 #include "support/openmesh_recording_importer.h"
+#include "support/scratch_dir.h"
 
 namespace gvm {
 namespace {
@@ -18,14 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::Has;
 
-fs::path temp_dir() {
-  fs::path d = fs::temp_directory_path() / ("gvm_mesh_reader_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
-
 std::string write(const std::string& name, const std::string& text) {
-  fs::path p = temp_dir() / name;
+  fs::path p = test::scratch_dir() / name;
   std::ofstream(p, std::ios::binary) << text;
   return p.string();
 }
@@ -86,7 +81,7 @@ TEST(MeshReader, ObjGroupsAndExactCoordinates) {
   s += "g bottom\n";
   auto face = [&](int k) {
     std::string f = "f";
-    for (int v : kQuads[k]) f += " " + std::to_string(v + 1) + "//1";
+    for (int v : kQuads[k]) f.append(" ").append(std::to_string(v + 1)).append("//1");
     return f + "\n";
   };
   s += face(0);
