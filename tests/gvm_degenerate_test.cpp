@@ -212,6 +212,32 @@ TEST_P(Variants, TwoDisjointPocketsTogetherAndAFaceWithoutOccluders) {
   EXPECT_TRUE(*fv.gvm == fv.lvm);
 }
 
+// A blind pocket with a groove round its walls at mid-depth (a square circlip groove):
+// looking straight in, the rays from the floor and the lower walls run along the upper
+// walls and only touch the groove's rims, while every direction around the axis is
+// blocked. Int(Phi(O + (-S))) holds the axis; the occlusion probe gives it back.
+TEST_P(Variants, GroovedPocketFloorAndLowerWallsStillSeeTheAxis) {
+  const auto o = GetParam();
+  Built b = build(test::grooved_pocket_part(o));
+  const auto axis = sphere::SphericalImage::point(rotated(o, 0, 0, 1));
+  sphere::SphericalImage floor = gvm_of(b, {"floor"});
+  EXPECT_TRUE(floor == axis) << floor.description();
+  sphere::SphericalImage lower = gvm_of(b, {"lower_x0", "lower_x1", "lower_y0", "lower_y1"});
+  EXPECT_TRUE(lower == axis) << lower.description();
+  // The upper walls see out of the pocket, but not down: those rays run along the lower
+  // walls into the floor's concave rim, where they enter the solid.
+  sphere::SphericalImage upper = gvm_of(b, {"upper_x0", "upper_x1", "upper_y0", "upper_y1"});
+  EXPECT_TRUE(upper == axis) << upper.description();
+  // The groove's floor and ceiling face each other: never visible.
+  EXPECT_TRUE(gvm_of(b, {"groove_floor"}).is_empty());
+  EXPECT_TRUE(gvm_of(b, {"groove_ceiling"}).is_empty());
+  // One lower wall alone sees an arc, from the axis to the direction grazing the
+  // opposite rim from the wall's bottom edge (4 across, 6 up).
+  sphere::SphericalImage wall = gvm_of(b, {"lower_x0"});
+  const ExactVec z = rotated(o, 0, 0, 1), rim = rotated(o, 2, 0, 3);
+  EXPECT_TRUE(wall == arc(rim, z, exact::cross(rim, z))) << wall.description();
+}
+
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},

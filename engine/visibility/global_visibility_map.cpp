@@ -14,6 +14,7 @@
 #include "visibility/effective_minkowski_envelope.h"
 #include "visibility/occluded_directions.h"
 #include "visibility/occluder_beam.h"
+#include "visibility/occlusion_probe.h"
 
 namespace gvm {
 namespace {
@@ -175,6 +176,30 @@ Occlusion convex_decomposition_occlusion(const SolidMesh& mesh, std::span<const 
   return {occluded_directions(cells, r), r};
 }
 
+// The GVM with the visible pieces of partly occluded arcs added (a piece whose ends
+// coincide is a point); points the pieces now hold are dropped.
+sphere::SphericalImage with_pieces(const sphere::SphericalImage& gvm,
+                                   const std::vector<sphere::Arc>& pieces) {
+  sphere::SphericalImage out;
+  for (const sphere::Face& f : gvm.faces()) out.add_face(f);
+  for (const sphere::Arc& a : gvm.curves()) out.add_curve(a);
+  std::vector<ExactVec> points = gvm.points();
+  for (const sphere::Arc& piece : pieces) {
+    if (exact::same_direction(piece.start, piece.end)) {
+      points.push_back(piece.start);
+    } else {
+      out.add_curve(piece);
+    }
+  }
+  for (const ExactVec& p : points) {
+    bool held = false;
+    for (const sphere::Arc& a : out.curves()) held = held || sphere::arc_contains(a, p);
+    for (const ExactVec& q : out.points()) held = held || exact::same_direction(p, q);
+    if (!held) out.add_point(p);
+  }
+  return out;
+}
+
 }  // namespace
 
 sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
@@ -220,13 +245,32 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   auto in_lvm_face = [&](uint32_t f) { return faces[f].coverage[kLvm] > 0; };
   auto occluded_face = [&](uint32_t f) { return faces[f].coverage[kOcclusion] > 0; };
   auto face_in = [&](uint32_t f) { return in_lvm_face(f) && !occluded_face(f); };
-  // A cell is in Int(GOM) iff every face around it is covered.
-  auto edge_in = [&](uint32_t e) {
-    uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
-    bool in_lvm = (arr.edges()[e].arc_layers & (1u << kLvm)) || in_lvm_face(left) ||
-                  in_lvm_face(right);
-    return in_lvm && !(occluded_face(left) && occluded_face(right));
-  };
+  // A cell is in Int(GOM) iff every face around it is covered -- but the points and arcs
+  // of the LVM in there may still be visible (rays along them that only graze O): the
+  // probe decides them from the rays (occlusion_probe.h).
+  const OcclusionProbe probe(mesh, s, beam);
+  std::vector<sphere::Arc> grazing;  // visible parts of arcs of the LVM in Int(GOM)
+  std::vector<uint8_t> edge_visible(arr.edges().size(), 0);
+  int probed_arcs = 0, probed_points = 0, visible_points = 0;
+  for (uint32_t e = 0; e < arr.edges().size(); ++e) {
+    const auto& edge = arr.edges()[e];
+    const uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
+    const bool on_lvm_arc = (edge.arc_layers & (1u << kLvm)) != 0;
+    if (!on_lvm_arc && !in_lvm_face(left) && !in_lvm_face(right)) continue;
+    if (!occluded_face(left) || !occluded_face(right)) {
+      edge_visible[e] = 1;
+    } else if (on_lvm_arc) {
+      const sphere::Arc arc{arr.vertices()[edge.v0].p, arr.vertices()[edge.v1].p, edge.normal};
+      std::vector<sphere::Arc> pieces = probe.unoccluded(arc);
+      ++probed_arcs;
+      if (pieces.size() == 1 && exact::same_direction(pieces[0].start, arc.start) &&
+          exact::same_direction(pieces[0].end, arc.end)) {
+        edge_visible[e] = 1;
+      } else {
+        grazing.insert(grazing.end(), pieces.begin(), pieces.end());
+      }
+    }
+  }
   auto vertex_in = [&](uint32_t v) {
     const auto& vert = arr.vertices()[v];
     bool in_lvm = (vert.point_layers & (1u << kLvm)) != 0;
@@ -237,9 +281,21 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
       all_occluded &= occluded_face(half[h].face);
     }
     if (vert.out.empty()) all_occluded = occluded_face(0);
-    return in_lvm && !all_occluded;
+    if (!in_lvm) return false;
+    if (!all_occluded) return true;
+    ++probed_points;
+    const bool visible = !probe.occluded(vert.p);
+    visible_points += visible;
+    return visible;
   };
-  sphere::SphericalImage gvm = arr.extract(face_in, edge_in, vertex_in);
+  sphere::SphericalImage gvm =
+      arr.extract(face_in, [&](uint32_t e) { return edge_visible[e] != 0; }, vertex_in);
+  if (!grazing.empty()) gvm = with_pieces(gvm, grazing);
+  if (probed_arcs + probed_points > 0) {
+    spdlog::debug("occlusion probe: {} arcs of the LVM inside the occluded directions ({} visible "
+                  "pieces), {} points ({} visible)",
+                  probed_arcs, grazing.size(), probed_points, visible_points);
+  }
   if (stats) {
     stats->occluded_boundary_arcs = occluded.boundary.size();
     stats->arrangement_vertices = occluded.arrangement_vertices + arr.vertices().size();

@@ -34,6 +34,7 @@ RawMesh slot_part(const TestPartOptions& o = {});           // groove along y, o
 RawMesh through_hole_part(const TestPartOptions& o = {});   // square hole along z
 RawMesh pocket_part(const TestPartOptions& o = {});         // blind square pocket
 RawMesh drafted_pocket_part(const TestPartOptions& o = {}); // walls lean out 1 in 4
+RawMesh grooved_pocket_part(const TestPartOptions& o = {}); // pocket, groove round its walls
 RawMesh step_part(const TestPartOptions& o = {});           // L-shaped step along y
 RawMesh tslot_closed_part(const TestPartOptions& o = {});   // T-slot closed at both ends
 RawMesh tslot_open_part(const TestPartOptions& o = {});     // T-slot open at both ends

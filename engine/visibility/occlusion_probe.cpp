@@ -1,0 +1,279 @@
+#include "visibility/occlusion_probe.h"
+
+#include <tbb/concurrent_vector.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <span>
+
+#include "sphere/spherical_image.h"
+#include "visibility/convex_decomposition.h"
+#include "visibility/direction_window.h"
+
+namespace gvm {
+namespace {
+
+using exact::ExactVec;
+using Corners = std::array<ExactVec, 3>;
+
+Corners corners(const SolidMesh& mesh, uint32_t t) {
+  const Triangle& tri = mesh.triangles[t];
+  return {ExactVec::from_point(mesh.points[tri[0]]), ExactVec::from_point(mesh.points[tri[1]]),
+          ExactVec::from_point(mesh.points[tri[2]])};
+}
+
+// Whether the points t (corners of T, or of one of its edges) and the sweep F_S + R>=0 u
+// are weakly separated along some axis: w . u >= 0 (else the sweep is unbounded below
+// along w) and w . (t - p) <= 0 for every t and every corner p of F_S. Weak separation
+// along the facet normals of their Minkowski difference decides that the relative
+// interiors are disjoint (separating axis theorem).
+bool separated(std::span<const ExactVec> axes, std::span<const ExactVec> t, const Corners& p,
+               const ExactVec& u) {
+  std::vector<ExactVec> differences;
+  for (const ExactVec& x : t) {
+    for (const ExactVec& y : p) differences.push_back(x - y);
+  }
+  for (const ExactVec& w : axes) {
+    if (exact::is_zero(w) || exact::sign_dot(w, u) == Sign::kNegative) continue;
+    bool separates = true;
+    for (const ExactVec& d : differences) {
+      if (exact::sign_dot(w, d) == Sign::kPositive) {
+        separates = false;
+        break;
+      }
+    }
+    if (separates) return true;
+  }
+  return false;
+}
+
+// Points of one arc shorter than 180 degrees around n, in their order along it.
+struct ArcOrder {
+  const ExactVec& n;
+  bool before(const ExactVec& x, const ExactVec& y) const {
+    return exact::sign_det(n, x, y) == Sign::kPositive;
+  }
+};
+
+// An open sub-arc (lo, hi) of the probed arc.
+struct Interval {
+  ExactVec lo, hi;
+};
+
+// The directions of the open arc in every open half-space {x . m > 0}: one open
+// interval, or false when there are none.
+// `whole` is set when no half-space cuts the arc.
+bool clip(const sphere::Arc& arc, std::span<const ExactVec> normals, Interval& out, bool* whole) {
+  const ArcOrder order{arc.normal};
+  out = {arc.start, arc.end};
+  *whole = true;
+  for (const ExactVec& m : normals) {
+    const Sign sa = exact::sign_dot(arc.start, m), sb = exact::sign_dot(arc.end, m);
+    // x . m is a sinusoid along the circle with zeros 180 degrees apart: on an arc
+    // shorter than that it changes sign at most once.
+    if (sa != Sign::kNegative && sb != Sign::kNegative && (sa != Sign::kZero || sb != Sign::kZero)) {
+      continue;  // positive on the whole open arc
+    }
+    if (sa == Sign::kZero || sb == Sign::kZero || sa == sb) return *whole = false;
+    ExactVec c = exact::cross(arc.normal, m);
+    if (!order.before(arc.start, c)) c = -c;
+    *whole = false;
+    if (sa == Sign::kPositive) {
+      if (order.before(c, out.hi)) out.hi = c;
+    } else if (order.before(out.lo, c)) {
+      out.lo = c;
+    }
+    if (!order.before(out.lo, out.hi)) return false;
+  }
+  return true;
+}
+
+// The closed pieces of the open arc outside every open interval (a piece with equal
+// ends is a point between two intervals).
+std::vector<sphere::Arc> complement(const sphere::Arc& arc, std::vector<Interval> covered) {
+  const ArcOrder order{arc.normal};
+  std::sort(covered.begin(), covered.end(),
+            [&](const Interval& x, const Interval& y) { return order.before(x.lo, y.lo); });
+  std::vector<sphere::Arc> pieces;
+  ExactVec frontier = arc.start;  // everything before it is decided
+  bool at_start = true;           // the frontier is the arc's own (excluded) start
+  for (const Interval& c : covered) {
+    if (order.before(frontier, c.lo)) {
+      pieces.push_back({frontier, c.lo, arc.normal});
+    } else if (!at_start && !order.before(c.lo, frontier)) {
+      pieces.push_back({frontier, frontier, arc.normal});
+    }
+    if (order.before(frontier, c.hi)) {
+      frontier = c.hi;
+      at_start = false;
+    }
+  }
+  if (order.before(frontier, arc.end)) pieces.push_back({frontier, arc.end, arc.normal});
+  return pieces;
+}
+
+void add_both_signs(std::vector<ExactVec>& axes) {
+  const size_t n = axes.size();
+  for (size_t i = 0; i < n; ++i) axes.push_back(-axes[i]);
+}
+
+}  // namespace
+
+bool OcclusionProbe::may_block(uint32_t fs, uint32_t ft, const ExactVec& u) const {
+  const Corners s = corners(mesh_, fs), t = corners(mesh_, ft);
+  const ExactVec n_s = exact::cross(s[1] - s[0], s[2] - s[0]);
+  const ExactVec n_t = exact::cross(t[1] - t[0], t[2] - t[0]);
+  const std::array<ExactVec, 3> s_edges{s[1] - s[0], s[2] - s[1], s[0] - s[2]};
+  const std::array<ExactVec, 3> t_edges{t[1] - t[0], t[2] - t[1], t[0] - t[2]};
+  const Sign facing = exact::sign_dot(u, n_s);
+  if (facing == Sign::kNegative) return true;  // not a direction of the LVM: no claim
+
+  // The facets of T - (F_S + R>=0 u): the two normals and the cross products of edges.
+  std::vector<ExactVec> axes{n_s, n_t};
+  for (const ExactVec& e : s_edges) axes.push_back(exact::cross(e, u));
+  for (const ExactVec& e : t_edges) {
+    axes.push_back(exact::cross(e, u));
+    for (const ExactVec& f : s_edges) axes.push_back(exact::cross(e, f));
+  }
+  add_both_signs(axes);
+  if (facing == Sign::kPositive) {
+    // The rays from F_S sweep an open prism that starts outside the solid: they meet
+    // its interior iff the prism meets a triangle of the boundary.
+    return !separated(axes, t, s, u);
+  }
+
+  // u lies in the plane P of F_S: the rays sweep the planar strip F_S + R>0 u. They enter
+  // the solid at a point of the strip where u points into it, which lies on a face met
+  // from the front (u . n_T < 0), across P (caught by the same test: the relative
+  // interiors meet) or touching P along an edge or at a corner.
+  if (exact::sign_dot(u, n_t) != Sign::kNegative) return false;
+  if (!separated(axes, t, s, u)) return true;
+  std::array<Sign, 3> side;
+  for (int i = 0; i < 3; ++i) side[i] = exact::sign_dot(n_s, t[i] - s[0]);
+  // In-plane normals of the strip's sides.
+  std::vector<ExactVec> in_plane{exact::cross(u, n_s)};
+  for (const ExactVec& e : s_edges) in_plane.push_back(exact::cross(e, n_s));
+  add_both_signs(in_plane);
+  for (int k = 0; k < 3; ++k) {
+    const int j = (k + 1) % 3;
+    if (side[k] != Sign::kZero || side[j] != Sign::kZero) continue;
+    std::vector<ExactVec> edge_axes = in_plane;
+    edge_axes.push_back(exact::cross(t_edges[k], n_s));
+    edge_axes.push_back(-edge_axes.back());
+    const std::array<ExactVec, 2> ends{t[k], t[j]};
+    if (separated(edge_axes, ends, s, u)) continue;
+    // The strip crosses the edge: u enters the solid there if the edge is concave or
+    // flat (T alone is met from the front), or convex and met from the front by both.
+    const uint32_t across = mesh_.neighbor[ft][k];
+    const Corners c = corners(mesh_, across);
+    const Triangle& tri = mesh_.triangles[across];
+    const Triangle& own = mesh_.triangles[ft];
+    int far = 0;
+    while (tri[far] == own[k] || tri[far] == own[j]) ++far;
+    const bool convex = exact::sign_dot(n_t, c[far] - t[0]) == Sign::kNegative;
+    if (!convex) return true;
+    if (exact::sign_dot(u, exact::cross(c[1] - c[0], c[2] - c[0])) == Sign::kNegative) return true;
+  }
+  // A corner of T inside the strip: whether u points into the solid there depends on the
+  // whole star of the corner; counted as blocking (conservative).
+  for (int k = 0; k < 3; ++k) {
+    if (side[k] == Sign::kZero && !separated(in_plane, std::span(&t[k], 1), s, u)) return true;
+  }
+  return false;
+}
+
+OcclusionProbe::OcclusionProbe(const SolidMesh& mesh, std::span<const uint32_t> s,
+                               std::span<const uint32_t> o)
+    : mesh_(mesh), s_(s.begin(), s.end()), o_(o.begin(), o.end()),
+      coordinate_bound_(coordinate_bound(mesh, s, o)) {}
+
+template <class Visit>
+void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Visit& visit) const {
+  // Pairs whose segments certainly miss the cell are left out (certified double filter).
+  const DirectionWindow window(cell, coordinate_bound_);
+  const size_t K = window.size();
+  auto extremes = [&](const std::vector<uint32_t>& triangles, bool largest) {
+    std::vector<double> out(triangles.size() * K), v(K);
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      double* e = &out[i * K];
+      for (int j = 0; j < 3; ++j) {
+        window.values(mesh_.points[mesh_.triangles[triangles[i]][j]], v.data());
+        for (size_t k = 0; k < K; ++k) {
+          e[k] = j == 0 ? v[k] : (largest ? std::max(e[k], v[k]) : std::min(e[k], v[k]));
+        }
+      }
+    }
+    return out;
+  };
+  const std::vector<double> o_max = extremes(o_, true), s_min = extremes(s_, false);
+  tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
+    for (size_t oi = 0; oi < o_.size(); ++oi) {
+      if (window.may_meet(&o_max[oi * K], &s_min[si * K]) && !visit(s_[si], o_[oi])) return;
+    }
+  });
+}
+
+bool OcclusionProbe::occluded(const ExactVec& u) const {
+  std::atomic<bool> found{false};
+  for_each_pair(sphere::SphericalImage::point(u), [&](uint32_t fs, uint32_t ft) {
+    if (found.load(std::memory_order_relaxed)) return false;
+    if (may_block(fs, ft, u)) found = true;
+    return true;
+  });
+  return found;
+}
+
+std::vector<sphere::Arc> OcclusionProbe::unoccluded(const sphere::Arc& open_arc) const {
+  // A triangle of S whose plane holds the arc sweeps planar strips all along it, where
+  // rays may graze: not decided here (the arc counts as occluded).
+  for (uint32_t t : s_) {
+    const Corners c = corners(mesh_, t);
+    if (exact::parallel(exact::cross(c[1] - c[0], c[2] - c[0]), open_arc.normal)) return {};
+  }
+  // Elsewhere u . n_S > 0 on the open arc (it lies in the LVM, and u . n_S is a sinusoid
+  // along its circle, so it cannot touch zero inside it): every ray from S sweeps open
+  // prisms, and u is occluded iff it lies in the interior of a pairwise map (rays from
+  // inside F_S hit the inside of T; conversely a generic ray of an open prism that meets
+  // the solid first enters it through the inside of a face, and perturbing both ends
+  // covers a neighbourhood of u).
+  sphere::SphericalImage cell;
+  cell.add_curve(open_arc);
+  tbb::concurrent_vector<Interval> covered;
+  std::atomic<bool> all_covered{false};  // by one map: the usual case deep in Int(GOM)
+  for_each_pair(cell, [&](uint32_t fs, uint32_t ft) {
+    if (all_covered.load(std::memory_order_relaxed)) return false;
+    const Triangle& s = mesh_.triangles[fs];
+    const Triangle& t = mesh_.triangles[ft];
+    std::vector<ExactVec> d;
+    for (uint32_t q : t) {
+      for (uint32_t p : s) {
+        if (q != p) d.push_back(ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]));
+      }
+    }
+    const sphere::SphericalImage map = pairwise_occlusion_map(d);
+    if (map.dimension() < 2) return true;
+    std::vector<ExactVec> normals;
+    if (!map.is_full_sphere()) {
+      for (const sphere::Arc& a : map.faces()[0].loops[0].arcs) normals.push_back(a.normal);
+    }
+    Interval interval;
+    bool whole = false;
+    if (clip(open_arc, normals, interval, &whole)) covered.push_back(std::move(interval));
+    if (whole) all_covered = true;
+    return true;
+  });
+  if (all_covered) return {};
+  // Points between two intervals are decided on their own (rays through them may still
+  // enter the solid in a plane of S).
+  std::vector<sphere::Arc> pieces;
+  for (sphere::Arc& piece : complement(open_arc, {covered.begin(), covered.end()})) {
+    if (!exact::same_direction(piece.start, piece.end) || !occluded(piece.start)) {
+      pieces.push_back(std::move(piece));
+    }
+  }
+  return pieces;
+}
+
+}  // namespace gvm
