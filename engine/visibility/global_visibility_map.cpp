@@ -177,23 +177,46 @@ Occlusion convex_decomposition_occlusion(const SolidMesh& mesh, std::span<const 
 }
 
 // The GVM with the visible pieces of partly occluded arcs added (a piece whose ends
-// coincide is a point); points the pieces now hold are dropped.
+// coincide is a point): arcs that continue one another on one circle are merged, as the
+// arrangement's extraction does, and points the arcs now hold are dropped.
 sphere::SphericalImage with_pieces(const sphere::SphericalImage& gvm,
                                    const std::vector<sphere::Arc>& pieces) {
-  sphere::SphericalImage out;
-  for (const sphere::Face& f : gvm.faces()) out.add_face(f);
-  for (const sphere::Arc& a : gvm.curves()) out.add_curve(a);
+  std::vector<sphere::Arc> arcs = gvm.curves();
   std::vector<ExactVec> points = gvm.points();
   for (const sphere::Arc& piece : pieces) {
     if (exact::same_direction(piece.start, piece.end)) {
       points.push_back(piece.start);
     } else {
-      out.add_curve(piece);
+      arcs.push_back(piece);
     }
   }
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (size_t i = 0; i < arcs.size() && !merged; ++i) {
+      for (size_t j = 0; j < arcs.size() && !merged; ++j) {
+        sphere::Arc& a = arcs[i];
+        sphere::Arc b = arcs[j];
+        if (i == j || a.full || b.full || !exact::parallel(a.normal, b.normal)) continue;
+        if (exact::sign_dot(a.normal, b.normal) == Sign::kNegative) b = {b.end, b.start, a.normal};
+        if (exact::same_direction(a.end, b.start)) {
+          a.end = b.end;
+        } else if (exact::same_direction(b.end, a.start)) {
+          a.start = b.start;
+        } else {
+          continue;
+        }
+        a.full = exact::same_direction(a.start, a.end);
+        arcs.erase(arcs.begin() + j);
+        merged = true;
+      }
+    }
+  }
+  sphere::SphericalImage out;
+  for (const sphere::Face& f : gvm.faces()) out.add_face(f);
+  for (const sphere::Arc& a : arcs) out.add_curve(a);
   for (const ExactVec& p : points) {
     bool held = false;
-    for (const sphere::Arc& a : out.curves()) held = held || sphere::arc_contains(a, p);
+    for (const sphere::Arc& a : arcs) held = held || sphere::arc_contains(a, p);
     for (const ExactVec& q : out.points()) held = held || exact::same_direction(p, q);
     if (!held) out.add_point(p);
   }
