@@ -12,7 +12,7 @@ namespace gvm::bench {
 namespace {
 
 constexpr double kPanelWidth = 460, kPanelHeight = 340;
-constexpr double kLeft = 72, kRight = 18, kTop = 56, kBottom = 52;
+constexpr double kLeft = 72, kRight = 18, kTop = 70, kBottom = 52;
 constexpr const char* kEnvelopeColour = "#1f77b4";
 constexpr const char* kConvexColour = "#d62728";
 
@@ -141,13 +141,15 @@ std::string comparison_plot_svg(const v1::Comparison& comparison) {
       width, height, width, height);
   svg += format(
       "<text x='%.1f' y='20' text-anchor='middle' font-size='14'>Effective Minkowski envelope "
-      "against convex decomposition: %d surfaces, %u thread(s), %s</text>\n",
-      width / 2, comparison.surfaces_size(), comparison.threads(),
+      "against convex decomposition</text>\n"
+      "<text x='%.1f' y='37' text-anchor='middle' font-size='11' fill='#444'>%d surfaces, "
+      "%u thread(s), %s</text>\n",
+      width / 2, width / 2, comparison.surfaces_size(), comparison.threads(),
       escaped(comparison.machine()).c_str());
   svg += format(
-      "<circle cx='%.1f' cy='38' r='3.5' fill='%s'/><text x='%.1f' y='42'>envelope (EME)</text>\n"
-      "<rect x='%.1f' y='34.5' width='7' height='7' fill='%s'/>"
-      "<text x='%.1f' y='42'>convex decomposition</text>\n",
+      "<circle cx='%.1f' cy='52' r='3.5' fill='%s'/><text x='%.1f' y='56'>envelope (EME)</text>\n"
+      "<rect x='%.1f' y='48.5' width='7' height='7' fill='%s'/>"
+      "<text x='%.1f' y='56'>convex decomposition</text>\n",
       kLeft + 8, kEnvelopeColour, kLeft + 16, kLeft + 130, kConvexColour, kLeft + 142);
   draw_panel(svg, 0, "seconds", seconds);
   draw_panel(svg, kPanelWidth, "#Arrng (arrangement vertices)", arrangement);
