@@ -12,6 +12,11 @@
 // its angular distance to the boundary of the GVM (loop edges, arcs, points) is below the
 // margin; otherwise engine_visible(u) (u inside a 2-cell of the GVM, decided by the parity of
 // crossings with a reference direction w outside the GVM) is compared with the oracle.
+// The arcs and points of the GVM (directions no random sample hits) are checked on their
+// own: a point, and the midpoint of every piece of an arc, must not be blocked robustly --
+// by a ray that crosses a triangle (front or back) well inside it and well off its plane.
+// Rays along these directions often graze the part exactly, which the doubles of the
+// oracle cannot decide; the check is one-sided, it catches a cell wrongly called visible.
 // --probe adds fixed directions (never skipped; the distance is printed). --negate evaluates
 // the engine side at -u: a deliberately wrong GVM, to see that the sweep notices.
 // Exit status: 0 all agree, 1 some disagreement, 2 usage or load errors.
@@ -260,6 +265,7 @@ struct Surface {
 struct PartTotals {
   int surfaces = 0, surfaces_checked = 0, surfaces_skipped = 0;
   long tested = 0, visible = 0, skipped_near_boundary = 0, agree = 0, disagree = 0, undecided = 0;
+  long cells = 0;  // arcs' midpoints and points of GVMs checked against robust blocking
 };
 
 // Explains an oracle "blocked" answer: self-occluding triangle or blocked ray.
@@ -309,6 +315,11 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
   oracle_options.max_points = opt.max_points;
   oracle_options.max_grid = opt.max_grid;
   const gvm::oracle::RayOracle oracle(m, oracle_options);
+  gvm::oracle::OracleOptions robust_options = oracle_options;
+  robust_options.barycentric_tolerance = -1e-7;
+  robust_options.front_tolerance = robust_options.self_tolerance = 1e-7;
+  robust_options.exits_block = true;
+  const gvm::oracle::RayOracle robust(m, robust_options);
   std::printf("%s: %zu triangles, %zu features, %zu regions\n", path.c_str(), m.triangles.size(),
               part->features().size(), part->regions().size());
 
@@ -444,6 +455,21 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
       const double theta = std::uniform_real_distribution<double>(0, 10 * kDeg)(rng);
       check(normalized(add(scale(a, std::cos(theta)), scale(t, std::sin(theta)))), false);
     }
+    // The GVM's own arcs and points (see the top of the file).
+    std::vector<Vec> cells = im.points;
+    for (const auto& arc : im.arcs) {
+      for (std::size_t i = 0; i + 1 < arc.size(); ++i) cells.push_back(normalized(add(arc[i], arc[i + 1])));
+    }
+    const std::vector<Vec> robust_points = cells.empty() ? std::vector<Vec>{} : robust.sample_points(s.triangles);
+    for (const Vec& u : cells) {
+      ++totals.cells;
+      if (robust.surface_visible(s.triangles, robust_points, u)) continue;
+      ++dis;
+      std::printf("    DISAGREE part=%s %s |S|=%zu u=(%.17g, %.17g, %.17g) engine=visible (an arc or "
+                  "point of the GVM) oracle=blocked robustly [%s]\n",
+                  path.c_str(), s.label.c_str(), s.triangles.size(), u[0], u[1], u[2],
+                  witness(robust, m, s, robust_points, u).c_str());
+    }
     const double oracle_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     totals.tested += tested;
@@ -549,10 +575,10 @@ int main(int argc, char** argv) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf(
         "SUMMARY %s: surfaces %d (checked %d, skipped %d), directions tested %ld (oracle "
-        "visible %ld), skipped near boundary %ld, undecided %ld, agreements %ld, "
-        "disagreements %ld, %.2f s\n",
+        "visible %ld), skipped near boundary %ld, undecided %ld, agreements %ld, arcs and "
+        "points of GVMs checked %ld, disagreements %ld, %.2f s\n",
         path.c_str(), t.surfaces, t.surfaces_checked, t.surfaces_skipped, t.tested, t.visible,
-        t.skipped_near_boundary, t.undecided, t.agree, t.disagree, seconds);
+        t.skipped_near_boundary, t.undecided, t.agree, t.cells, t.disagree, seconds);
     std::fflush(stdout);
     total_disagree += t.disagree;
   }

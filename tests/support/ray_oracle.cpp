@@ -141,16 +141,18 @@ bool RayOracle::ray_blocked(const Vec& p, const Vec& u, uint32_t* hit) const {
       const Vec& n = normal_[t];
       const double un = dot(u, n);
       const double nn = norm(n);
-      // Only transversal hits from the front side block; grazing ones do not.
-      if (!(un < -options_.front_tolerance * nn)) continue;
-      // Moeller-Trumbore with barycentrics normalized by the determinant (= -u . n > 0).
+      // Only transversal hits from the front side block (or from either side, with
+      // exits_block); grazing ones do not.
+      const bool front = un < -options_.front_tolerance * nn;
+      if (!front && !(options_.exits_block && un > options_.front_tolerance * nn)) continue;
+      // Moeller-Trumbore with barycentrics normalized by the determinant (= -u . n).
       const Triangle& tri = mesh_.triangles[t];
       const Vec a = to_vec(mesh_.points[tri[0]]);
       const Vec e1 = sub(to_vec(mesh_.points[tri[1]]), a);
       const Vec e2 = sub(to_vec(mesh_.points[tri[2]]), a);
       const Vec pvec = cross(u, e2);
       const double det = dot(e1, pvec);
-      if (!(det > 0)) continue;
+      if (!(front ? det > 0 : det < 0)) continue;
       const Vec s = sub(p, a);
       const double b1 = dot(s, pvec) / det;
       if (!(b1 > -bary_tol)) continue;

@@ -39,6 +39,9 @@ struct OracleOptions {
   double front_tolerance = 1e-9;
   double barycentric_tolerance = 1e-12;  // hit inside iff all barycentrics > -this
   double self_tolerance = 1e-12;   // self-occlusion iff u . n_F < -this * |n_F| for F in S
+  // A transversal hit from the back side blocks too: the ray was inside the solid before
+  // it (it got in at a corner or an edge, which no front hit of a sampled ray shows).
+  bool exits_block = false;
 };
 
 using Vec = std::array<double, 3>;
@@ -76,8 +79,9 @@ class RayOracle {
   // (a shadow edge that just clips a corner of S); candidates come from the BVH.
   bool any_ray_blocked(const std::vector<uint32_t>& s_triangles, const Vec& u) const;
 
-  // The ray p + t u (t > tmin) meets some triangle transversally from its front side; the
-  // first such triangle found is returned in *hit when not null.
+  // The ray p + t u (t > tmin) meets some triangle transversally from its front side (or
+  // either side, with exits_block); the first such triangle found is returned in *hit
+  // when not null.
   bool ray_blocked(const Vec& p, const Vec& u, uint32_t* hit = nullptr) const;
 
   double tmin() const { return tmin_; }
