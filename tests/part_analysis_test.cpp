@@ -542,6 +542,30 @@ TEST(PartPotential, MatchesBruteForceOnRandomSurfaces) {
     }
 }
 
+// Large planar faces take the per-plane path of the search (condition (ii) once per
+// plane): every named face, and whole concave regions, against the definition.
+TEST(PartPotential, MatchesBruteForceOnLargePlanarFacesAndRegions) {
+  int planar_faces = 0;
+  for (const auto& tp : test::all_test_parts()) {
+    const TestPartOptions o{.rotation = 2, .split = true};
+    const RawMesh raw = tp.make(o);
+    Part p = analyze(raw);
+    std::vector<std::vector<uint32_t>> surfaces;
+    for (const auto& [name, faces] : raw.groups) {
+      std::vector<uint32_t> s = test::triangles_of_faces(p.mesh(), faces);
+      if (s.size() >= 16) ++planar_faces;
+      surfaces.push_back(std::move(s));
+    }
+    for (const ConcaveRegion& r : p.regions()) surfaces.push_back(r.triangles);
+    for (const auto& s : surfaces) {
+      auto n = p.neighbor_occluders(s);
+      EXPECT_EQ(p.potential_occluders(s, n, kAll), brute_force_potential(p, s, n))
+          << describe(tp.name, o);
+    }
+  }
+  EXPECT_GT(planar_faces, 10);  // the per-plane path did run
+}
+
 // ---- face group files ------------------------------------------------------------------
 
 class PartFaceGroups : public ::testing::Test {

@@ -15,6 +15,7 @@
 #include "exact/filtered.h"
 #include "exact/predicates.h"
 #include "part/convex_hull.h"
+#include "part/potentially_facing.h"
 
 namespace gvm {
 namespace {
@@ -92,55 +93,6 @@ struct IdSet {
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   }
   bool contains(uint32_t t) const { return std::binary_search(ids.begin(), ids.end(), t); }
-};
-
-// Bounding-box tree over a set of triangles (structure only: boxes are exact min/max of
-// input coordinates, so corner points are input-like doubles usable in exact predicates).
-struct BoxTree {
-  struct Node {
-    Point3 lo, hi;
-    uint32_t begin, end;      // range in `items`
-    uint32_t left = kNone, right = kNone;
-  };
-  std::vector<Node> nodes;
-  std::vector<uint32_t> items;
-
-  BoxTree(const SolidMesh& m, std::vector<uint32_t> tris) : items(std::move(tris)) {
-    if (!items.empty()) build(m, 0, static_cast<uint32_t>(items.size()));
-  }
-
-  uint32_t build(const SolidMesh& m, uint32_t begin, uint32_t end) {
-    Node n;
-    n.begin = begin, n.end = end;
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t i = begin; i < end; ++i)
-      for (uint32_t v : m.triangles[items[i]])
-        for (int k = 0; k < 3; ++k) {
-          lo[k] = std::min(lo[k], m.points[v][k]);
-          hi[k] = std::max(hi[k], m.points[v][k]);
-        }
-    n.lo = {lo[0], lo[1], lo[2]};
-    n.hi = {hi[0], hi[1], hi[2]};
-    uint32_t id = static_cast<uint32_t>(nodes.size());
-    nodes.push_back(n);
-    if (end - begin > 4) {
-      int axis = 0;
-      for (int k = 1; k < 3; ++k)
-        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-      auto key = [&](uint32_t t) {
-        const Triangle& tr = m.triangles[t];
-        return m.points[tr[0]][axis] + m.points[tr[1]][axis] + m.points[tr[2]][axis];
-      };
-      uint32_t mid = begin + (end - begin) / 2;
-      std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
-                       [&](uint32_t x, uint32_t y) { return key(x) < key(y); });
-      uint32_t l = build(m, begin, mid);
-      uint32_t r = build(m, mid, end);
-      nodes[id].left = l;
-      nodes[id].right = r;
-    }
-    return id;
-  }
 };
 
 }  // namespace
@@ -388,47 +340,9 @@ std::vector<uint32_t> Part::potential_occluders(
     for (uint32_t t : I.regions[r].triangles)
       if (!in_s.contains(t) && !in_n.contains(t)) cand.push_back(t);
     if (cand.empty()) continue;
-    BoxTree tree(m, s_r);
+    const part_internal::PotentiallyFacing facing(m, s_r);
     std::vector<uint8_t> ok(cand.size(), 0);
-    tbb::parallel_for(size_t(0), cand.size(), [&](size_t ci) {
-      const uint32_t fp = cand[ci];
-      const Point3 &a = I.P(fp, 0), &b = I.P(fp, 1), &c = I.P(fp, 2);
-      Sign ns[3];
-      for (int k = 0; k < 3; ++k) ns[k] = exact::cross_component(a, b, c, k);
-      uint32_t stack[128];
-      int top = 0;
-      stack[top++] = 0;
-      while (top > 0) {
-        const BoxTree::Node& n = tree.nodes[stack[--top]];
-        // Certified prune for condition (i): the box corner farthest along n_F' (chosen
-        // by the exact signs of n_F') is not strictly in front of F', so no vertex in
-        // the box is.
-        Point3 corner{ns[0] == Sign::kPositive ? n.hi.x : n.lo.x,
-                      ns[1] == Sign::kPositive ? n.hi.y : n.lo.y,
-                      ns[2] == Sign::kPositive ? n.hi.z : n.lo.z};
-        if (exact::orient3d(a, b, c, corner) != Sign::kPositive) continue;
-        if (n.left != kNone) {
-          stack[top++] = n.left;
-          stack[top++] = n.right;
-          continue;
-        }
-        for (uint32_t i = n.begin; i < n.end; ++i) {
-          const uint32_t fs = tree.items[i];
-          bool cond1 = false, cond2 = false;
-          for (int k = 0; k < 3 && !cond1; ++k)
-            cond1 = exact::orient3d(a, b, c, I.P(fs, k)) == Sign::kPositive;
-          if (!cond1) continue;
-          const Point3 *p[3] = {&a, &b, &c};
-          for (int k = 0; k < 3 && !cond2; ++k)
-            cond2 = exact::orient3d(I.P(fs, 0), I.P(fs, 1), I.P(fs, 2), *p[k]) != Sign::kNegative;
-          if (cond2) {
-            ok[ci] = 1;
-            top = 0;
-            break;
-          }
-        }
-      }
-    });
+    tbb::parallel_for(size_t(0), cand.size(), [&](size_t ci) { ok[ci] = facing.faces(cand[ci]); });
     for (size_t ci = 0; ci < cand.size(); ++ci)
       if (ok[ci]) passed.push_back(cand[ci]);
   }

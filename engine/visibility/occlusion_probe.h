@@ -1,26 +1,28 @@
-// Whether a single direction of the LVM is occluded, decided from the rays themselves.
+// Whether directions of the LVM inside Int(GOM) are occluded, decided from the rays.
 //
 // The paper takes GOM(S, O) = Int(Phi(O + (-S))) (Eq. 3). That is exact away from
 // degenerate directions, but a direction whose rays only graze O while every direction
 // around it is blocked lies in that interior and is still visible: the floor of a bore
-// with a circlip groove, seen along the axis (the rays run along the wall above the groove
-// and touch its rim), or a pocket whose opening has exactly the floor's outline. The GVM
-// asks this probe about the points of the LVM that lie in that interior.
+// with a circlip groove seen along the axis (its rays run along the wall above the groove
+// and touch the groove's rims), or the wall of a countersunk hole seen out of the
+// countersink. The GVM asks this probe about the points and arcs of the LVM in there.
 //
-// u is occluded iff some ray from S along u meets the interior of the solid. For a
-// triangle F_S of S with u . n_S > 0 its rays sweep the prism F_S + R>0 u, whose interior
-// is open and starts outside the solid: it meets the solid's interior iff it meets its
-// boundary, i.e. a triangle of O (the first entry is through a face met from the front,
-// which is potentially facing, Def. 5, and in the occluder beam). A triangle T and that
-// open prism are disjoint iff an axis w weakly separates them (w . t <= w . x for t in T
-// and x in the prism): the separating axis theorem for the Minkowski difference, whose
-// facet normals are the normals of both and the cross products of their edge directions.
-// Decided exactly.
-//
-// Triangles of S parallel to u sweep a planar strip instead, and rays along a face's plane
-// may graze it: there the probe counts any triangle of O that meets the closed strip as
-// blocking. So "occluded" may be conservative when u lies in a plane of S (the old answer,
-// Int(Phi) stays), "visible" is always exact.
+// u is occluded iff some ray from S along u meets the interior of the solid.
+//  - For a triangle F_S of S with u . n_S > 0 the rays sweep the prism F_S + R>0 u, whose
+//    interior is open and starts outside the solid: it meets the solid's interior iff it
+//    meets its boundary, i.e. a triangle of O (the first entry is through a face met from
+//    the front, which is potentially facing, Def. 5, and in the occluder beam). A triangle
+//    T and the open prism are disjoint iff an axis weakly separates them (separating axis
+//    theorem: the facet normals of their Minkowski difference are the normals of both and
+//    the cross products of their edge directions).
+//  - For F_S parallel to u the rays sweep a planar strip and may graze faces. They enter
+//    the solid at a point of the strip where u points into it, on a face T met from the
+//    front: T crosses the strip's plane there (the relative interiors meet: the same
+//    test), or touches it along an edge, where u enters iff the edge is concave or flat,
+//    or convex with the face across met from the front too, or at a corner, where the
+//    whole star of the corner would decide: counted as entering (conservative).
+// Every pair is decided exactly, so "visible" is exact and "occluded" is exact except
+// for rays in a plane of S that pass a corner of O.
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,209 @@
+#include "part/potentially_facing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "exact/exact_vec.h"
+#include "exact/predicates.h"
+
+namespace gvm::part_internal {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+// Planes with fewer triangles of S stay with the per-triangle search.
+constexpr size_t kMinPlaneTriangles = 16;
+
+// Bounding-box tree over a set of triangles (structure only: boxes are exact min/max of
+// input coordinates, so corner points are input-like doubles usable in exact predicates).
+struct BoxTree {
+  struct Node {
+    Point3 lo, hi;
+    uint32_t begin, end;  // range in `items`
+    uint32_t left = kNone, right = kNone;
+  };
+  std::vector<Node> nodes;
+  std::vector<uint32_t> items;
+
+  BoxTree(const SolidMesh& m, std::vector<uint32_t> tris) : items(std::move(tris)) {
+    if (!items.empty()) build(m, 0, static_cast<uint32_t>(items.size()));
+  }
+
+  uint32_t build(const SolidMesh& m, uint32_t begin, uint32_t end) {
+    Node n;
+    n.begin = begin, n.end = end;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = begin; i < end; ++i)
+      for (uint32_t v : m.triangles[items[i]])
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], m.points[v][k]);
+          hi[k] = std::max(hi[k], m.points[v][k]);
+        }
+    n.lo = {lo[0], lo[1], lo[2]};
+    n.hi = {hi[0], hi[1], hi[2]};
+    uint32_t id = static_cast<uint32_t>(nodes.size());
+    nodes.push_back(n);
+    if (end - begin > 4) {
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+      auto key = [&](uint32_t t) {
+        const Triangle& tr = m.triangles[t];
+        return m.points[tr[0]][axis] + m.points[tr[1]][axis] + m.points[tr[2]][axis];
+      };
+      uint32_t mid = begin + (end - begin) / 2;
+      std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                       [&](uint32_t x, uint32_t y) { return key(x) < key(y); });
+      uint32_t l = build(m, begin, mid);
+      uint32_t r = build(m, mid, end);
+      nodes[id].left = l;
+      nodes[id].right = r;
+    }
+    return id;
+  }
+
+  // Calls leaf(i) for the items of the leaves whose box has a corner strictly in front of
+  // the plane (a, b, c) -- a certified prune for condition (i): the corner farthest along
+  // the normal (chosen by its exact signs) is not in front, so no vertex in the box is --
+  // until leaf returns true; returns whether one did.
+  template <class Leaf>
+  bool search(const Point3& a, const Point3& b, const Point3& c, const Leaf& leaf) const {
+    if (nodes.empty()) return false;
+    Sign ns[3];
+    for (int k = 0; k < 3; ++k) ns[k] = exact::cross_component(a, b, c, k);
+    uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& n = nodes[stack[--top]];
+      const Point3 corner{ns[0] == Sign::kPositive ? n.hi.x : n.lo.x,
+                          ns[1] == Sign::kPositive ? n.hi.y : n.lo.y,
+                          ns[2] == Sign::kPositive ? n.hi.z : n.lo.z};
+      if (exact::orient3d(a, b, c, corner) != Sign::kPositive) continue;
+      if (n.left != kNone) {
+        stack[top++] = n.left;
+        stack[top++] = n.right;
+        continue;
+      }
+      for (uint32_t i = n.begin; i < n.end; ++i) {
+        if (leaf(items[i])) return true;
+      }
+    }
+    return false;
+  }
+};
+
+// A key of the triangle's oriented plane in doubles; exactly coplanar triangles get the
+// same key except at rounding boundaries (then they form two groups, which is only
+// slower).
+std::array<int64_t, 4> plane_key(const SolidMesh& m, uint32_t t, double scale) {
+  const Point3 &a = m.points[m.triangles[t][0]], &b = m.points[m.triangles[t][1]],
+               &c = m.points[m.triangles[t][2]];
+  const double u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z};
+  double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(len > 0)) return {0, 0, 0, int64_t(t) + 1};  // alone
+  for (double& x : n) x /= len;
+  const double d = (n[0] * a.x + n[1] * a.y + n[2] * a.z) / scale;
+  return {std::llround(n[0] * 1e6), std::llround(n[1] * 1e6), std::llround(n[2] * 1e6),
+          std::llround(d * 1e6)};
+}
+
+}  // namespace
+
+struct PotentiallyFacing::Impl {
+  const SolidMesh& mesh;
+  struct Plane {
+    uint32_t representative;  // (ii) holds for all triangles of the plane or for none
+    BoxTree tree;
+  };
+  std::vector<Plane> planes;
+  BoxTree rest;  // triangles of smaller planes: both conditions per triangle
+
+  const Point3& P(uint32_t t, int i) const { return mesh.points[mesh.triangles[t][i]]; }
+  // (ii): some vertex of f not strictly behind the plane of s.
+  bool not_behind(uint32_t s, uint32_t f) const {
+    for (int k = 0; k < 3; ++k) {
+      if (exact::orient3d(P(s, 0), P(s, 1), P(s, 2), P(f, k)) != Sign::kNegative) return true;
+    }
+    return false;
+  }
+  // (i): some vertex of s strictly in front of f.
+  bool in_front(uint32_t s, uint32_t f) const {
+    for (int k = 0; k < 3; ++k) {
+      if (exact::orient3d(P(f, 0), P(f, 1), P(f, 2), P(s, k)) == Sign::kPositive) return true;
+    }
+    return false;
+  }
+};
+
+namespace {
+
+// Splits S into the triangles of its large planes (exactly coplanar, alike oriented) and
+// the rest.
+void group_by_plane(const SolidMesh& m, const std::vector<uint32_t>& s,
+                    std::vector<std::vector<uint32_t>>& planes, std::vector<uint32_t>& rest) {
+  double scale = 1;
+  for (uint32_t t : s)
+    for (uint32_t v : m.triangles[t])
+      scale = std::max({scale, std::fabs(m.points[v].x), std::fabs(m.points[v].y), std::fabs(m.points[v].z)});
+  std::map<std::array<int64_t, 4>, std::vector<uint32_t>> by_key;
+  for (uint32_t t : s) by_key[plane_key(m, t, scale)].push_back(t);
+  auto P = [&](uint32_t t, int i) -> const Point3& { return m.points[m.triangles[t][i]]; };
+  auto normal = [&](uint32_t t) { return exact::triangle_normal(P(t, 0), P(t, 1), P(t, 2)); };
+  for (auto& [key, members] : by_key) {
+    std::vector<std::vector<uint32_t>> exact_groups;
+    for (uint32_t t : members) {
+      bool placed = false;
+      for (auto& g : exact_groups) {
+        const uint32_t r = g.front();
+        bool coplanar = true;
+        for (int k = 0; k < 3 && coplanar; ++k)
+          coplanar = exact::orient3d(P(r, 0), P(r, 1), P(r, 2), P(t, k)) == Sign::kZero;
+        if (coplanar && exact::sign_dot(normal(r), normal(t)) == Sign::kPositive) {
+          g.push_back(t);
+          placed = true;
+          break;
+        }
+      }
+      if (!placed) exact_groups.push_back({t});
+    }
+    for (auto& g : exact_groups) {
+      if (g.size() >= kMinPlaneTriangles) {
+        planes.push_back(std::move(g));
+      } else {
+        rest.insert(rest.end(), g.begin(), g.end());
+      }
+    }
+  }
+}
+
+}  // namespace
+
+PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<uint32_t>& s) {
+  std::vector<std::vector<uint32_t>> planes;
+  std::vector<uint32_t> rest;
+  group_by_plane(mesh, s, planes, rest);
+  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest))});
+  for (auto& p : planes) {
+    const uint32_t representative = p.front();
+    impl->planes.push_back({representative, BoxTree(mesh, std::move(p))});
+  }
+  impl_ = std::move(impl);
+}
+
+PotentiallyFacing::~PotentiallyFacing() = default;
+
+bool PotentiallyFacing::faces(uint32_t f) const {
+  const Impl& I = *impl_;
+  const Point3 &a = I.P(f, 0), &b = I.P(f, 1), &c = I.P(f, 2);
+  for (const Impl::Plane& plane : I.planes) {
+    if (!I.not_behind(plane.representative, f)) continue;
+    if (plane.tree.search(a, b, c, [&](uint32_t s) { return I.in_front(s, f); })) return true;
+  }
+  return I.rest.search(a, b, c, [&](uint32_t s) { return I.in_front(s, f) && I.not_behind(s, f); });
+}
+
+}  // namespace gvm::part_internal
