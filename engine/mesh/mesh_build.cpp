@@ -1,5 +1,7 @@
 // Validation of a raw mesh and construction of the SolidMesh. Every geometric decision is
 // an exact predicate from engine/exact; no epsilon anywhere.
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -194,7 +196,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
       std::sort(sorted[f].begin(), sorted[f].end());
     }
     std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    tbb::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
       return sorted[a] != sorted[b] ? sorted[a] < sorted[b] : a < b;
     });
     uint32_t best_a = UINT32_MAX, best_b = UINT32_MAX, group_first = 0;
@@ -228,7 +230,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
   };
   std::vector<HalfEdge> he(nc);
   for (uint32_t c = 0; c < nc; ++c) he[c] = {ekey(cv(c), cv(cnext(c))), c};
-  std::sort(he.begin(), he.end(), [](const HalfEdge& a, const HalfEdge& b) {
+  tbb::parallel_sort(he.begin(), he.end(), [](const HalfEdge& a, const HalfEdge& b) {
     return a.key != b.key ? a.key < b.key : a.id < b.id;
   });
   // Per half-edge: number of uses of its undirected edge and its twin.
@@ -343,7 +345,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
     std::vector<HalfEdge> th(3 * size_t(nt));
     for (uint32_t t = 0; t < nt; ++t)
       for (int i = 0; i < 3; ++i) th[3 * t + i] = {ekey(tris[t][i], tris[t][(i + 1) % 3]), 3 * t + i};
-    std::sort(th.begin(), th.end(), [](const HalfEdge& a, const HalfEdge& b) {
+    tbb::parallel_sort(th.begin(), th.end(), [](const HalfEdge& a, const HalfEdge& b) {
       return a.key != b.key ? a.key < b.key : a.id < b.id;
     });
     for (size_t i = 0; i < th.size();) {

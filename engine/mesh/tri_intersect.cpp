@@ -1,6 +1,10 @@
 #include "mesh/tri_intersect.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "exact/predicates.h"
@@ -174,10 +178,16 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
       if (entries.size() > 32 * nt + 1024) too_many = true;
     }
     if (!too_many || attempt > 20) {
-      std::sort(entries.begin(), entries.end());
-      for (size_t i = 0; i < entries.size();) {
-        size_t j = i;
-        while (j < entries.size() && entries[j].first == entries[i].first) ++j;
+      tbb::parallel_sort(entries.begin(), entries.end());
+      std::vector<size_t> cell_start;
+      for (size_t i = 0; i < entries.size(); ++i) {
+        if (i == 0 || entries[i].first != entries[i - 1].first) cell_start.push_back(i);
+      }
+      cell_start.push_back(entries.size());
+      // The first contact in the order of the cells (then of the pairs in a cell), found in
+      // parallel: the answer, the pair named in the message, does not depend on threads.
+      auto contact_in_cell = [&](size_t k) -> std::optional<std::pair<uint32_t, uint32_t>> {
+        const size_t i = cell_start[k], j = cell_start[k + 1];
         const uint64_t key = entries[i].first;
         for (size_t a = i; a < j; ++a) {
           const uint32_t ta = entries[a].second;
@@ -200,9 +210,17 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
             }
           }
         }
-        i = j;
-      }
-      return std::nullopt;
+        return std::nullopt;
+      };
+      const size_t cells = cell_start.size() - 1;
+      std::atomic<size_t> first{cells};
+      tbb::parallel_for(size_t{0}, cells, [&](size_t k) {
+        if (k >= first.load(std::memory_order_relaxed) || !contact_in_cell(k)) return;
+        for (size_t seen = first.load(); k < seen && !first.compare_exchange_weak(seen, k);) {
+        }
+      });
+      if (first == cells) return std::nullopt;
+      return contact_in_cell(first);
     }
     cell *= 2;
   }

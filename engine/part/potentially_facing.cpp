@@ -116,8 +116,8 @@ std::array<int64_t, 4> plane_key(const SolidMesh& m, uint32_t t, double scale) {
 struct PotentiallyFacing::Impl {
   const SolidMesh& mesh;
   struct Plane {
-    uint32_t representative;  // (ii) holds for all triangles of the plane or for none
-    BoxTree tree;
+    uint32_t representative;      // (ii) holds for all triangles of the plane or for none
+    std::vector<uint32_t> hull;   // vertices of the convex hull of its triangles' vertices
   };
   std::vector<Plane> planes;
   BoxTree rest;  // triangles of smaller planes: both conditions per triangle
@@ -180,6 +180,42 @@ void group_by_plane(const SolidMesh& m, const std::vector<uint32_t>& s,
   }
 }
 
+// The vertices of the convex hull of the triangles' vertices (all on one plane): a vertex
+// of the plane is strictly in front of F' iff one of these is, the sign being affine along
+// the plane. Monotone chain in the projection along an axis the plane is not parallel to.
+std::vector<uint32_t> planar_hull(const SolidMesh& m, const std::vector<uint32_t>& triangles) {
+  auto P = [&](uint32_t v) -> const Point3& { return m.points[v]; };
+  const Triangle& r = m.triangles[triangles.front()];
+  int drop = 0;
+  while (exact::cross_component(P(r[0]), P(r[1]), P(r[2]), drop) == Sign::kZero) ++drop;
+  const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+  std::vector<uint32_t> v;
+  for (uint32_t t : triangles) v.insert(v.end(), m.triangles[t].begin(), m.triangles[t].end());
+  std::sort(v.begin(), v.end(), [&](uint32_t a, uint32_t b) {
+    return P(a)[i] != P(b)[i] ? P(a)[i] < P(b)[i] : P(a)[j] < P(b)[j];
+  });
+  v.erase(std::unique(v.begin(), v.end(), [&](uint32_t a, uint32_t b) {
+            return P(a)[i] == P(b)[i] && P(a)[j] == P(b)[j];
+          }),
+          v.end());
+  if (v.size() < 3) return v;
+  std::vector<uint32_t> hull(2 * v.size());
+  size_t k = 0;
+  auto turns_left = [&](uint32_t a, uint32_t b, uint32_t c) {
+    return exact::orient2d(P(a), P(b), P(c), drop) == Sign::kPositive;
+  };
+  for (size_t n = 0; n < v.size(); ++n) {  // lower chain
+    while (k >= 2 && !turns_left(hull[k - 2], hull[k - 1], v[n])) --k;
+    hull[k++] = v[n];
+  }
+  for (size_t n = v.size() - 1, lower = k + 1; n-- > 0;) {  // upper chain
+    while (k >= lower && !turns_left(hull[k - 2], hull[k - 1], v[n])) --k;
+    hull[k++] = v[n];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 }  // namespace
 
 PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<uint32_t>& s) {
@@ -187,10 +223,7 @@ PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<ui
   std::vector<uint32_t> rest;
   group_by_plane(mesh, s, planes, rest);
   auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest))});
-  for (auto& p : planes) {
-    const uint32_t representative = p.front();
-    impl->planes.push_back({representative, BoxTree(mesh, std::move(p))});
-  }
+  for (const auto& p : planes) impl->planes.push_back({p.front(), planar_hull(mesh, p)});
   impl_ = std::move(impl);
 }
 
@@ -201,7 +234,9 @@ bool PotentiallyFacing::faces(uint32_t f) const {
   const Point3 &a = I.P(f, 0), &b = I.P(f, 1), &c = I.P(f, 2);
   for (const Impl::Plane& plane : I.planes) {
     if (!I.not_behind(plane.representative, f)) continue;
-    if (plane.tree.search(a, b, c, [&](uint32_t s) { return I.in_front(s, f); })) return true;
+    for (uint32_t v : plane.hull) {
+      if (exact::orient3d(a, b, c, I.mesh.points[v]) == Sign::kPositive) return true;
+    }
   }
   return I.rest.search(a, b, c, [&](uint32_t s) { return I.in_front(s, f) && I.not_behind(s, f); });
 }
