@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 
 #include "gvm/analysis.h"
 #include "gvm/mesh.h"
@@ -131,9 +132,8 @@ class Progress {
   std::atomic<bool> cancelled_{false};
 };
 
-}  // namespace
-
-StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
+// The whole analysis, inside the caller's task arena (so --threads bounds every phase).
+StatusOr<v1::Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads) {
   const auto t_start = Clock::now();
   v1::Analysis result;
   result.set_engine_version(GVM_VERSION);
@@ -175,30 +175,23 @@ StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
   std::vector<double> surface_seconds(surfaces.size());
 
   t0 = Clock::now();
-  const int threads = request.options.threads() > 0
-                          ? static_cast<int>(request.options.threads())
-                          : tbb::this_task_arena::max_concurrency();
   timing->set_threads(static_cast<uint32_t>(threads));
   const OcclusionMethod method =
       request.options.occlusion_method() == v1::OCCLUSION_METHOD_CONVEX_DECOMPOSITION
           ? OcclusionMethod::kConvexDecomposition
           : OcclusionMethod::kEffectiveMinkowskiEnvelope;
   Progress progress(surfaces.size(), request.progress);
-  tbb::task_arena arena(threads);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, surfaces.size(), 1),
-                      [&](const tbb::blocked_range<size_t>& range) {
-                        for (size_t i = range.begin(); i != range.end(); ++i) {
-                          if (progress.cancelled()) return;
-                          auto ts = Clock::now();
-                          maps[i] = compute_surface_visibility(*part, surfaces[i],
-                                                               !request.options.lvm_only(),
-                                                               method);
-                          surface_seconds[i] = seconds_since(ts);
-                          progress.tick();
-                        }
-                      });
-  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, surfaces.size(), 1),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t i = range.begin(); i != range.end(); ++i) {
+                        if (progress.cancelled()) return;
+                        auto ts = Clock::now();
+                        maps[i] = compute_surface_visibility(*part, surfaces[i],
+                                                             !request.options.lvm_only(), method);
+                        surface_seconds[i] = seconds_since(ts);
+                        progress.tick();
+                      }
+                    });
   if (progress.cancelled()) return Status(StatusCode::kCancelled, "analysis cancelled");
   timing->set_visibility_seconds(seconds_since(t0));
 
@@ -232,6 +225,17 @@ StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
   stats->set_surfaces_with_potential_occluders(with_occluders);
   timing->set_total_seconds(seconds_since(t_start));
   return result;
+}
+
+}  // namespace
+
+StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request) {
+  const int threads = request.options.threads() > 0 ? static_cast<int>(request.options.threads())
+                                                    : tbb::this_task_arena::max_concurrency();
+  tbb::task_arena arena(threads);
+  std::optional<StatusOr<v1::Analysis>> out;
+  arena.execute([&] { out.emplace(analyze_in_arena(request, threads)); });
+  return std::move(*out);
 }
 
 std::string to_json(const v1::Analysis& analysis) {

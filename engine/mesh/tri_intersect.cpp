@@ -179,48 +179,47 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
     }
     if (!too_many || attempt > 20) {
       tbb::parallel_sort(entries.begin(), entries.end());
-      std::vector<size_t> cell_start;
-      for (size_t i = 0; i < entries.size(); ++i) {
-        if (i == 0 || entries[i].first != entries[i - 1].first) cell_start.push_back(i);
+      // Each entry's cell ends where the key changes.
+      std::vector<size_t> cell_end(entries.size());
+      for (size_t i = entries.size(); i-- > 0;) {
+        cell_end[i] = i + 1 < entries.size() && entries[i + 1].first == entries[i].first ? cell_end[i + 1]
+                                                                                        : i + 1;
       }
-      cell_start.push_back(entries.size());
-      // The first contact in the order of the cells (then of the pairs in a cell), found in
-      // parallel: the answer, the pair named in the message, does not depend on threads.
-      auto contact_in_cell = [&](size_t k) -> std::optional<std::pair<uint32_t, uint32_t>> {
-        const size_t i = cell_start[k], j = cell_start[k + 1];
-        const uint64_t key = entries[i].first;
-        for (size_t a = i; a < j; ++a) {
-          const uint32_t ta = entries[a].second;
-          const Box& A = box[ta];
-          for (size_t b = a + 1; b < j; ++b) {
-            const uint32_t tb = entries[b].second;
-            if (tri_face[ta] == tri_face[tb]) continue;
-            const Box& B = box[tb];
-            bool overlap = true;
-            int64_t c[3];
-            for (int ax = 0; ax < 3 && overlap; ++ax) {
-              if (A.hi[ax] < B.lo[ax] || B.hi[ax] < A.lo[ax]) overlap = false;
-              c[ax] = idx(std::max(A.lo[ax], B.lo[ax]), ax);
-            }
-            if (!overlap) continue;
-            if (((uint64_t(c[0]) << 42) | (uint64_t(c[1]) << 21) | uint64_t(c[2])) != key) continue;
-            if (improper_contact(P, tris[ta], tris[tb])) {
-              uint32_t fa = tri_face[ta], fb = tri_face[tb];
-              return std::make_pair(std::min(fa, fb), std::max(fa, fb));
-            }
+      // The contact of entry a with a later entry of its cell, the first such in their
+      // order; in parallel over the entries (big cells hold most of the pairs).
+      auto contact_from = [&](size_t a) -> std::optional<std::pair<uint32_t, uint32_t>> {
+        const uint64_t key = entries[a].first;
+        const uint32_t ta = entries[a].second;
+        const Box& A = box[ta];
+        for (size_t b = a + 1; b < cell_end[a]; ++b) {
+          const uint32_t tb = entries[b].second;
+          if (tri_face[ta] == tri_face[tb]) continue;
+          const Box& B = box[tb];
+          bool overlap = true;
+          int64_t c[3];
+          for (int ax = 0; ax < 3 && overlap; ++ax) {
+            if (A.hi[ax] < B.lo[ax] || B.hi[ax] < A.lo[ax]) overlap = false;
+            c[ax] = idx(std::max(A.lo[ax], B.lo[ax]), ax);
+          }
+          if (!overlap) continue;
+          if (((uint64_t(c[0]) << 42) | (uint64_t(c[1]) << 21) | uint64_t(c[2])) != key) continue;
+          if (improper_contact(P, tris[ta], tris[tb])) {
+            uint32_t fa = tri_face[ta], fb = tri_face[tb];
+            return std::make_pair(std::min(fa, fb), std::max(fa, fb));
           }
         }
         return std::nullopt;
       };
-      const size_t cells = cell_start.size() - 1;
-      std::atomic<size_t> first{cells};
-      tbb::parallel_for(size_t{0}, cells, [&](size_t k) {
-        if (k >= first.load(std::memory_order_relaxed) || !contact_in_cell(k)) return;
-        for (size_t seen = first.load(); k < seen && !first.compare_exchange_weak(seen, k);) {
+      // The first entry with a contact: the pair named in the message does not depend on
+      // the number of threads.
+      std::atomic<size_t> first{entries.size()};
+      tbb::parallel_for(size_t{0}, entries.size(), [&](size_t a) {
+        if (a >= first.load(std::memory_order_relaxed) || !contact_from(a)) return;
+        for (size_t seen = first.load(); a < seen && !first.compare_exchange_weak(seen, a);) {
         }
       });
-      if (first == cells) return std::nullopt;
-      return contact_in_cell(first);
+      if (first == entries.size()) return std::nullopt;
+      return contact_from(first);
     }
     cell *= 2;
   }
