@@ -189,24 +189,30 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
     if (hull.facets.empty())
       return InvalidArgument(src + ": all vertices are coplanar, the part bounds no volume");
     I.hull.assign(nt, 0);
-    std::vector<uint32_t> start(nt, kNone);
-    std::vector<uint32_t> queue;
-    queue.reserve(nt);
+    // Breadth-first from each seed, one level at a time: the triangles of a level are
+    // decided in parallel, each warm-started from the answer of the one that reached it.
+    std::vector<uint32_t> start(nt, kNone), level, next, best;
     for (uint32_t seed = 0; seed < nt; ++seed) {
       if (start[seed] != kNone) continue;
       start[seed] = hull.any_vertex;
-      queue.assign(1, seed);
-      for (size_t qi = 0; qi < queue.size(); ++qi) {
-        uint32_t t = queue[qi];
-        uint32_t best = part::hull_extreme_vertex(hull, m.points, I.P(t, 0), I.P(t, 1),
-                                                  I.P(t, 2), start[t]);
-        I.hull[t] = exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[best]) !=
-                    Sign::kPositive;
-        for (uint32_t u : m.neighbor[t])
-          if (start[u] == kNone) {
-            start[u] = best;
-            queue.push_back(u);
-          }
+      level.assign(1, seed);
+      while (!level.empty()) {
+        best.resize(level.size());
+        tbb::parallel_for(size_t(0), level.size(), [&](size_t i) {
+          const uint32_t t = level[i];
+          best[i] = part::hull_extreme_vertex(hull, m.points, I.P(t, 0), I.P(t, 1), I.P(t, 2),
+                                              start[t]);
+          I.hull[t] = exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[best[i]]) !=
+                      Sign::kPositive;
+        });
+        next.clear();
+        for (size_t i = 0; i < level.size(); ++i)
+          for (uint32_t u : m.neighbor[level[i]])
+            if (start[u] == kNone) {
+              start[u] = best[i];
+              next.push_back(u);
+            }
+        level.swap(next);
       }
     }
   }
