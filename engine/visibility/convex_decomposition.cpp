@@ -69,21 +69,8 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
                                                     ConvexDecompositionStatistics* stats) {
   const size_t K = window ? window->size() : 0;
   // Window values at the vertices of each triangle of O (max) and of S (min).
-  auto extremes = [&](std::span<const uint32_t> triangles, bool largest) {
-    std::vector<double> out(triangles.size() * K), v(K);
-    for (size_t i = 0; i < triangles.size(); ++i) {
-      double* e = &out[i * K];
-      for (int j = 0; j < 3; ++j) {
-        window->values(mesh.points[mesh.triangles[triangles[i]][j]], v.data());
-        for (size_t k = 0; k < K; ++k) {
-          e[k] = j == 0 ? v[k] : (largest ? std::max(e[k], v[k]) : std::min(e[k], v[k]));
-        }
-      }
-    }
-    return out;
-  };
-  const std::vector<double> o_max = K ? extremes(o, true) : std::vector<double>{};
-  const std::vector<double> s_min = K ? extremes(s, false) : std::vector<double>{};
+  const std::vector<double> o_max = K ? window->extremes(mesh, o, true) : std::vector<double>{};
+  const std::vector<double> s_min = K ? window->extremes(mesh, s, false) : std::vector<double>{};
 
   struct Chunk {
     std::vector<SphericalImage> maps;

@@ -81,6 +81,23 @@ double coordinate_bound(const SolidMesh& mesh, std::span<const uint32_t> a,
   return bound;
 }
 
+std::vector<double> DirectionWindow::extremes(const SolidMesh& mesh,
+                                             std::span<const uint32_t> triangles,
+                                             bool largest) const {
+  const size_t K = size();
+  std::vector<double> out(triangles.size() * K), v(K);
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    double* e = &out[i * K];
+    for (int j = 0; j < 3; ++j) {
+      values(mesh.points[mesh.triangles[triangles[i]][j]], v.data());
+      for (size_t k = 0; k < K; ++k) {
+        e[k] = j == 0 ? v[k] : (largest ? std::max(e[k], v[k]) : std::min(e[k], v[k]));
+      }
+    }
+  }
+  return out;
+}
+
 bool DirectionWindow::may_meet(const double* q_max, const double* p_min) const {
   size_t begin = 0;
   for (size_t end : cell_end_) {

@@ -33,6 +33,10 @@ class DirectionWindow {
   // largest m_k . q over the face's vertices q of O, p_min[k] the smallest m_k . p over
   // its vertices p of S (the face's vertices are all pairs (q, p)).
   bool may_meet(const double* q_max, const double* p_min) const;
+  // For each triangle, the size() largest (or smallest) values m_k . x over its three
+  // vertices, triangle after triangle: the q_max or p_min of may_meet for its pairs.
+  std::vector<double> extremes(const SolidMesh& mesh, std::span<const uint32_t> triangles,
+                               bool largest) const;
 
  private:
   std::vector<std::array<double, 3>> normals_;

@@ -194,20 +194,8 @@ void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Vis
   // Pairs whose segments certainly miss the cell are left out (certified double filter).
   const DirectionWindow window(cell, coordinate_bound_);
   const size_t K = window.size();
-  auto extremes = [&](const std::vector<uint32_t>& triangles, bool largest) {
-    std::vector<double> out(triangles.size() * K), v(K);
-    for (size_t i = 0; i < triangles.size(); ++i) {
-      double* e = &out[i * K];
-      for (int j = 0; j < 3; ++j) {
-        window.values(mesh_.points[mesh_.triangles[triangles[i]][j]], v.data());
-        for (size_t k = 0; k < K; ++k) {
-          e[k] = j == 0 ? v[k] : (largest ? std::max(e[k], v[k]) : std::min(e[k], v[k]));
-        }
-      }
-    }
-    return out;
-  };
-  const std::vector<double> o_max = extremes(o_, true), s_min = extremes(s_, false);
+  const std::vector<double> o_max = window.extremes(mesh_, o_, true);
+  const std::vector<double> s_min = window.extremes(mesh_, s_, false);
   tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
     for (size_t oi = 0; oi < o_.size(); ++oi) {
       if (window.may_meet(&o_max[oi * K], &s_min[si * K]) && !visit(s_[si], o_[oi])) return;
