@@ -53,6 +53,13 @@ bool parallel(const ExactVec& a, const ExactVec& b);
 // Same direction on the sphere: parallel and a . b > 0.
 bool same_direction(const ExactVec& a, const ExactVec& b);
 
+// Angles against a double s2 taken exactly (a, b non-zero): the sign of
+// sin^2(angle(a, b)) - s2, i.e. of |a x b|^2 - s2 |a|^2 |b|^2, and of cos^2(angle(a, b)) - s2,
+// i.e. of (a . b)^2 - s2 |a|^2 |b|^2. With s2 = sin^2(theta): a point within theta of a
+// direction, a direction within theta of the great circle with normal b.
+Sign sign_sin2_angle_minus(const ExactVec& a, const ExactVec& b, double s2);
+Sign sign_cos2_angle_minus(const ExactVec& a, const ExactVec& b, double s2);
+
 // A unit vector within `radius` (Euclidean, certified) of the exact direction of a
 // non-zero vector: for bounding boxes and candidate searches, never for decisions.
 struct UnitEstimate {

@@ -108,4 +108,9 @@ class SphericalImage {
 // included; a full circle repeats its first vertex at the end). Exact constructions.
 std::vector<exact::ExactVec> split_arc(const Arc& arc);
 
+// Vertices of an arc split into pieces of at most 90 degrees, for output: the added
+// vertices are exact points of the arc's circle (quarter turns from its start), so that
+// the doubles of consecutive vertices decide each piece unambiguously.
+std::vector<exact::ExactVec> split_arc_quarters(const Arc& arc);
+
 }  // namespace gvm::sphere
