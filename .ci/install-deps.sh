@@ -7,6 +7,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libgtest-dev libgmock-dev libbenchmark-dev
   libgmp-dev
+  coinor-libcbc-dev
 )
 missing=()
 for p in "${packages[@]}"; do
