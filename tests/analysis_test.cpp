@@ -83,7 +83,7 @@ TEST_P(SharedPart, LocalVisibilityMapsMatchBruteForce) {
       inside += expected;
       ++checked;
     }
-    if (vis.kind == GvmKind::kEmptyVoid) {
+    if (vis.status == GvmStatus::kEmptyVoid) {
       ASSERT_TRUE(vis.gvm.has_value());
       EXPECT_TRUE(vis.gvm->is_empty()) << "a void face is never visible";
       ++void_surfaces;

@@ -206,7 +206,7 @@ TEST_P(Variants, TwoDisjointPocketsTogetherAndAFaceWithoutOccluders) {
   Built step = build(test::step_part(o));
   auto floor = test::triangles_of(step.part.mesh(), step.raw, {"step_floor"});
   SurfaceVisibility fv = visibility(step.part, floor);
-  EXPECT_EQ(fv.kind, GvmKind::kExactNoPotentialOccluders);
+  EXPECT_EQ(fv.status, GvmStatus::kExactNoPotentialOccluders);
   EXPECT_TRUE(fv.occluders.potential.empty());
   ASSERT_TRUE(fv.gvm.has_value());
   EXPECT_TRUE(*fv.gvm == fv.lvm);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/sphere_proto.h"
 #include "exact/exact_vec.h"
 #include "gvm/v1/gvm.pb.h"
 #include "sphere/local_visibility_map.h"
@@ -290,7 +291,7 @@ TEST_P(LvmDegenerate, ProtoOfEveryOutcome) {
   for (size_t i = 0; i < cases.size(); ++i) {
     auto s = lvm(cases[i]);
     gvm::v1::SphericalImage p;
-    s.to_proto(&p);
+    gvm::io::to_proto(s, &p);
     EXPECT_EQ(p.dimension(), dims[i]) << i;
     EXPECT_EQ(p.full_sphere(), i == 0) << i;
     EXPECT_EQ(p.polygons_size(), counts[i][0]) << i;

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "io/sphere_proto.h"
 #include "exact/exact_vec.h"
 #include "gvm/v1/gvm.pb.h"
 #include "sphere/local_visibility_map.h"
@@ -155,7 +156,7 @@ TEST(LvmRandom, ContainsAndHullAgainstIntegerBruteForce) {
     // arc shorter than 180 degrees, region on the left (sampled point-in-polygon test for
     // these convex loops).
     gvm::v1::SphericalImage proto;
-    s.to_proto(&proto);
+    gvm::io::to_proto(s, &proto);
     ASSERT_EQ(proto.dimension(), s.dimension()) << trace();
     const int samples = 20000;
     int hits = 0;

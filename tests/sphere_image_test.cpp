@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "io/sphere_proto.h"
 #include "exact/exact_vec.h"
 #include "gvm/v1/gvm.pb.h"
 #include "sphere/spherical_image.h"
@@ -88,7 +89,7 @@ TEST(SphereImage, SpecialShapes) {
 
 TEST(SphereImage, ProtoOfAHemisphereIsACounterClockwiseSquare) {
   gvm::v1::SphericalImage m;
-  SphericalImage::hemisphere(V(0, 0, 1)).to_proto(&m);
+  gvm::io::to_proto(SphericalImage::hemisphere(V(0, 0, 1)), &m);
   ASSERT_EQ(m.polygons_size(), 1);
   ASSERT_EQ(m.polygons(0).loops_size(), 1);
   const auto& loop = m.polygons(0).loops(0);
@@ -103,7 +104,7 @@ TEST(SphereImage, ProtoOfAHemisphereIsACounterClockwiseSquare) {
   EXPECT_EQ(m.area(), 2 * kPi);
   EXPECT_EQ(m.description(), "hemisphere around (0, 0, 1)");
   gvm::v1::SphericalImage g;
-  SphericalImage::great_circle(V(1, 0, 0)).to_proto(&g);
+  gvm::io::to_proto(SphericalImage::great_circle(V(1, 0, 0)), &g);
   ASSERT_EQ(g.arcs_size(), 1);
   EXPECT_EQ(g.arcs(0).vertices_size(), 5);  // closed: first vertex repeated
 }

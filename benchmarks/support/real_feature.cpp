@@ -63,7 +63,7 @@ RealFeature load_real_feature() {
   for (const auto& [bound, f] : order) {
     if (bound <= best) break;
     SurfaceVisibility sv = compute_surface_visibility(pt, f->triangles, false);
-    if (sv.kind != GvmKind::kGlobalOcclusionNotComputed) continue;  // no occlusion to compute
+    if (sv.status != GvmStatus::kGlobalOcclusionNotComputed) continue;  // no occlusion to compute
     const uint64_t work = uint64_t(f->triangles.size()) * sv.occluders.potential.size();
     if (work >= kMaxWork || work <= best) continue;
     best = work;

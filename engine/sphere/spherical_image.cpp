@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gvm/v1/gvm.pb.h"
 #include "sphere/point_in_face.h"
 
 namespace gvm::sphere {
@@ -202,12 +201,6 @@ std::string describe_curve(const Arc& a) {
          " to " + fmt_vec(a.end);
 }
 
-void set_vec(gvm::v1::Vec3* out, const ExactVec& v) {
-  D3 u = v.unit();
-  out->set_x(u[0]);
-  out->set_y(u[1]);
-  out->set_z(u[2]);
-}
 
 }  // namespace
 
@@ -347,32 +340,6 @@ std::string SphericalImage::description() const {
   std::string s = parts[0];
   for (size_t i = 1; i < parts.size(); ++i) s += "; " + parts[i];
   return s;
-}
-
-void SphericalImage::to_proto(gvm::v1::SphericalImage* out) const {
-  out->Clear();
-  out->set_dimension(dimension());
-  out->set_area(area());
-  out->set_description(description());
-  if (full_) {
-    out->set_full_sphere(true);
-    return;
-  }
-  for (const Face& f : faces_) {
-    auto* poly = out->add_polygons();
-    for (const Loop& l : f.loops) {
-      auto* loop = poly->add_loops();
-      for (const Arc& a : l.arcs) {
-        std::vector<ExactVec> v = split_arc(a);
-        for (size_t i = 0; i + 1 < v.size(); ++i) set_vec(loop->add_vertices(), v[i]);
-      }
-    }
-  }
-  for (const Arc& a : curves_) {
-    auto* arc = out->add_arcs();
-    for (const ExactVec& v : split_arc(a)) set_vec(arc->add_vertices(), v);
-  }
-  for (const ExactVec& p : points_) set_vec(out->add_points(), p);
 }
 
 }  // namespace gvm::sphere

@@ -27,10 +27,6 @@
 
 #include "exact/exact_vec.h"
 
-namespace gvm::v1 {
-class SphericalImage;
-}
-
 namespace gvm::sphere {
 
 struct Arc {
@@ -93,9 +89,6 @@ class SphericalImage {
 
   // One line for people, e.g. "point (0, 0, 1)", "hemisphere around (0, 0, 1)".
   std::string description() const;
-  // Fills the message; loops and arcs are split so that every consecutive pair of
-  // vertices is joined by an arc strictly shorter than 180 degrees.
-  void to_proto(gvm::v1::SphericalImage* out) const;
 
  private:
   bool full_ = false;

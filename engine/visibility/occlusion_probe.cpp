@@ -213,6 +213,22 @@ bool OcclusionProbe::occluded(const ExactVec& u) const {
   return found;
 }
 
+std::vector<uint32_t> OcclusionProbe::blockers(const ExactVec& u) const {
+  std::vector<std::atomic<bool>> blocks(o_.size());
+  std::vector<uint32_t> index_of(mesh_.triangles.size());
+  for (uint32_t i = 0; i < o_.size(); ++i) index_of[o_[i]] = i;
+  for_each_pair(sphere::SphericalImage::point(u), [&](uint32_t fs, uint32_t ft) {
+    std::atomic<bool>& b = blocks[index_of[ft]];
+    if (!b.load(std::memory_order_relaxed) && may_block(fs, ft, u)) b = true;
+    return true;
+  });
+  std::vector<uint32_t> out;
+  for (uint32_t i = 0; i < o_.size(); ++i) {
+    if (blocks[i]) out.push_back(o_[i]);
+  }
+  return out;
+}
+
 std::vector<sphere::Arc> OcclusionProbe::unoccluded(const sphere::Arc& open_arc) const {
   // A triangle of S whose plane holds the arc sweeps planar strips all along it, where
   // rays may graze: not decided here (the arc counts as occluded).

@@ -50,6 +50,10 @@ class OcclusionProbe {
   // occluded (nothing is returned).
   std::vector<sphere::Arc> unoccluded(const sphere::Arc& open_arc) const;
 
+  // The triangles of O through which rays from S along u (a direction of the LVM) enter
+  // the solid, ascending: the faces that block u (exact, with the same exception).
+  std::vector<uint32_t> blockers(const exact::ExactVec& u) const;
+
  private:
   // Whether rays from triangle fs of S along u may meet the interior of the solid through
   // triangle ft of O (exact unless u lies in fs's plane and the rays pass a corner of ft).

@@ -34,12 +34,12 @@ SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const u
 
   if (touches_void(mesh, s)) {
     // A ray leaving a void face stays in the bounded void until it enters the solid.
-    out.kind = GvmKind::kEmptyVoid;
+    out.status = GvmStatus::kEmptyVoid;
     out.gvm = sphere::SphericalImage::empty();
     return out;
   }
   if (out.lvm.dimension() < 0) {
-    out.kind = GvmKind::kExactNoPotentialOccluders;
+    out.status = GvmStatus::kExactNoPotentialOccluders;
     out.gvm = out.lvm;
     return out;
   }
@@ -49,14 +49,14 @@ SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const u
       s, out.occluders.neighbor,
       [&](uint32_t t) { return !out.lvm.within_closed_hemisphere(normal_of(mesh, t)); });
   if (out.occluders.potential.empty()) {
-    out.kind = GvmKind::kExactNoPotentialOccluders;
+    out.status = GvmStatus::kExactNoPotentialOccluders;
     out.gvm = out.lvm;
   } else if (global_occlusion) {
     out.gvm = global_visibility_map(mesh, s, out.occluders.potential, out.lvm, method,
                                     &out.statistics);
-    out.kind = GvmKind::kGlobalOcclusionComputed;
+    out.status = GvmStatus::kGlobalOcclusionComputed;
   } else {
-    out.kind = GvmKind::kGlobalOcclusionNotComputed;
+    out.status = GvmStatus::kGlobalOcclusionNotComputed;
   }
   return out;
 }

@@ -7,24 +7,18 @@
 #include <span>
 #include <vector>
 
+#include "gvm/analysis.h"
 #include "gvm/part.h"
 #include "sphere/spherical_image.h"
 #include "visibility/global_visibility_map.h"
 
 namespace gvm {
 
-enum class GvmKind {
-  kExactNoPotentialOccluders,   // O_S empty: GVM = LVM(S + N_S)
-  kGlobalOcclusionNotComputed,  // O_S not empty: LVM(S + N_S) only bounds the GVM
-  kGlobalOcclusionComputed,     // GVM = LVM(S + N_S) - GOM(S, O_S) by the envelope
-  kEmptyVoid,                   // S touches an internal void: never visible
-};
-
 struct SurfaceVisibility {
   Occluders occluders;
   sphere::SphericalImage lvm;                 // LVM(S + N_S)
   std::optional<sphere::SphericalImage> gvm;  // set when known exactly
-  GvmKind kind = GvmKind::kGlobalOcclusionNotComputed;
+  GvmStatus status = GvmStatus::kGlobalOcclusionNotComputed;
   GlobalOcclusionStatistics statistics;
 };
 

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "io/sphere_proto.h"
 #include "gvm/mesh.h"
 #include "gvm/part.h"
 #include "gvm/v1/gvm.pb.h"
@@ -246,12 +247,12 @@ void usage() {
                "[--negate] [--verbose]\n");
 }
 
-const char* kind_name(gvm::GvmKind k) {
+const char* kind_name(gvm::GvmStatus k) {
   switch (k) {
-    case gvm::GvmKind::kExactNoPotentialOccluders: return "exact, O_S empty";
-    case gvm::GvmKind::kGlobalOcclusionNotComputed: return "global occlusion not computed";
-    case gvm::GvmKind::kGlobalOcclusionComputed: return "global occlusion computed";
-    case gvm::GvmKind::kEmptyVoid: return "empty (void)";
+    case gvm::GvmStatus::kExactNoPotentialOccluders: return "exact, O_S empty";
+    case gvm::GvmStatus::kGlobalOcclusionNotComputed: return "global occlusion not computed";
+    case gvm::GvmStatus::kGlobalOcclusionComputed: return "global occlusion computed";
+    case gvm::GvmStatus::kEmptyVoid: return "empty (void)";
   }
   return "?";
 }
@@ -355,13 +356,13 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
     const double gvm_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!vis.gvm) {
-      std::printf("  %s: skipped, no GVM (%s) [%.2fs]\n", s.label.c_str(), kind_name(vis.kind),
+      std::printf("  %s: skipped, no GVM (%s) [%.2fs]\n", s.label.c_str(), kind_name(vis.status),
                   gvm_seconds);
       ++totals.surfaces_skipped;
       continue;
     }
     gvm::v1::SphericalImage proto;
-    vis.gvm->to_proto(&proto);
+    gvm::io::to_proto(*vis.gvm, &proto);
     const Image im = image_of(proto);
     std::size_t loop_edges = 0;
     for (const auto& p : im.polygons) for (const auto& l : p) loop_edges += l.size();
@@ -446,7 +447,7 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
     // As many again near the corners of the GVM and of the LVM, where the answer changes:
     // uniform directions alone rarely land in a small GVM.
     gvm::v1::SphericalImage lvm_proto;
-    vis.lvm.to_proto(&lvm_proto);
+    gvm::io::to_proto(vis.lvm, &lvm_proto);
     std::vector<Vec> anchors = corners(im);
     for (const Vec& v : corners(image_of(lvm_proto))) anchors.push_back(v);
     for (int i = 0; i < opt.directions && !anchors.empty(); ++i) {
@@ -480,7 +481,7 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
         "  %s |S|=%zu: %s, GVM %s (area %.4f sr, %zu polygons, %zu loop edges, %zu arcs, %zu "
         "points), %zu sample points; tested %ld (oracle visible %ld), skipped %ld, "
         "disagreements %ld [GVM %.2fs, oracle %.2fs]\n",
-        s.label.c_str(), s.triangles.size(), kind_name(vis.kind),
+        s.label.c_str(), s.triangles.size(), kind_name(vis.status),
         im.full ? "full sphere" : (im.polygons.empty() && im.arcs.empty() && im.points.empty()
                                        ? "empty"
                                        : "non-empty"),

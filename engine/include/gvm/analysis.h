@@ -1,10 +1,20 @@
-// The engine's entry point: a part file in, every concave region and feature with its
-// visibility maps out, as the protobuf message gvm.v1.Analysis.
+// The engine's entry point: a part in, every concave region and feature with its exact
+// visibility maps out. The Analysis object owns those maps (and the part), so that a
+// planner -- or a daemon caching it -- can decide on exact sets, never on the rounded
+// doubles of the JSON; `gvm/analysis_proto.h` turns it into the message gvm.v1.Analysis.
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
+#include "gvm/direction.h"
+#include "gvm/direction_set.h"
+#include "gvm/geometry.h"
 #include "gvm/status.h"
 #include "gvm/v1/gvm.pb.h"
 
@@ -19,9 +29,89 @@ struct AnalyzeRequest {
   std::function<bool(size_t, size_t)> progress;
 };
 
-StatusOr<v1::Analysis> analyze(const AnalyzeRequest& request);
+// What the map called gvm is, for one surface.
+enum class GvmStatus {
+  kExactNoPotentialOccluders,   // O_S empty: GVM = LVM(S + N_S)
+  kGlobalOcclusionNotComputed,  // O_S not empty, occlusion skipped: only the LVM is known
+  kGlobalOcclusionComputed,     // GVM = LVM(S + N_S) - GOM(S, O_S)
+  kEmptyVoid,                   // S touches an internal void: never visible
+};
 
-// Protobuf's JSON mapping of an analysis (lowerCamelCase names, every field printed).
-std::string to_json(const v1::Analysis& analysis);
+// Sizes of the computation for one surface (paper Tables 1-2).
+struct SurfaceStatistics {
+  uint32_t neighbor_occluders = 0;   // |N_S| in input faces
+  uint32_t potential_occluders = 0;  // |O_S| in input faces
+  uint64_t envelope_border_arcs = 0, envelope_faces = 0, envelope_patches = 0;
+  uint64_t pairwise_maps = 0, pairwise_map_arcs = 0;
+  uint64_t arrangement_vertices = 0, occluded_boundary_arcs = 0;
+  bool envelope_ran = false;         // the effective Minkowski envelope was computed
+  bool pairwise_ran = false;         // convex decomposition was computed
+  double seconds = 0;
+};
+
+struct SurfaceMaps {
+  DirectionSet lvm;                  // LVM(S + N_S)
+  std::optional<DirectionSet> gvm;   // set when known exactly
+  GvmStatus status = GvmStatus::kGlobalOcclusionNotComputed;
+  SurfaceStatistics statistics;
+};
+
+// A concave region or a feature with its maps.
+struct Surface {
+  enum class Kind { kRegion, kFeature };
+  Kind kind = Kind::kFeature;
+  uint32_t id = 0;
+  std::string name;                  // features: the user's group name or "F<id>"
+  std::vector<uint32_t> faces;       // input face indices, ascending
+  bool on_hull = false;              // features: every face is a hull facet
+  int32_t region = -1;               // features: the concave region, -1 on the hull
+  bool is_void = false;              // regions: bounds an internal void
+  std::vector<uint32_t> features;    // regions: the features inside
+  // Every triangle lies in one plane with one orientation: its outward normal, exactly.
+  std::optional<Direction> planar_normal;
+  SurfaceMaps maps;
+};
+
+struct PartSummary {
+  std::string source;
+  uint32_t input_faces = 0, input_vertices = 0, triangles = 0;
+  uint32_t shells = 0, void_shells = 0, hull_faces = 0;
+  Point3 box_min, box_max;
+};
+
+struct AnalysisTiming {
+  double read = 0, validate = 0, part = 0, visibility = 0, total = 0;
+  uint32_t threads = 0;
+};
+
+class Analysis {
+ public:
+  const PartSummary& part() const;
+  const std::vector<Surface>& regions() const;
+  const std::vector<Surface>& features() const;
+  const AnalysisTiming& timing() const;
+  const v1::AnalyzeOptions& options() const;
+  uint32_t surfaces_with_potential_occluders() const;
+
+  // The surface made of any set of input faces, with its maps computed now as for a
+  // feature, with the analysis's options (to plan an unreachable feature piece by piece);
+  // its id and name are left unset. kInvalidArgument names a face not in the part.
+  StatusOr<Surface> surface_of(std::span<const uint32_t> faces) const;
+  // The input faces that rays from the given faces along u meet from the front (they
+  // enter the solid there), decided exactly; u should be in the faces' LVM(S + N_S).
+  std::vector<uint32_t> blocking_faces(std::span<const uint32_t> faces, const Direction& u) const;
+  // The given faces in maximal edge-connected pieces that lie in one plane with one
+  // orientation (a triangulated CAD face is one piece; each facet of a curved face is
+  // its own), each ascending, in order of their smallest face.
+  std::vector<std::vector<uint32_t>> planar_pieces(std::span<const uint32_t> faces) const;
+
+  struct Impl;
+  explicit Analysis(std::shared_ptr<const Impl> impl);
+
+ private:
+  std::shared_ptr<const Impl> impl_;  // immutable: copies share it
+};
+
+StatusOr<Analysis> analyze(const AnalyzeRequest& request);
 
 }  // namespace gvm

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "analysis_report.h"
 
 #include <iomanip>
 #include <sstream>
@@ -58,7 +58,8 @@ void print_report(const v1::Analysis& a, std::ostream& out) {
 
   out << "Concave regions: " << a.regions_size() << "\n";
   for (const v1::Region& r : a.regions()) {
-    std::string label = "R" + std::to_string(r.id()) + (r.is_void() ? " (void)" : "");
+    std::string label = "R";  // appended: GCC 12 warns falsely on "R" + std::string
+    label += std::to_string(r.id()) + (r.is_void() ? " (void)" : "");
     print_surface(r, label, out);
   }
   out << "\nFeatures: " << a.features_size() << "\n";

@@ -1,0 +1,39 @@
+// What an Analysis owns, shared by the driver that builds it and the queries on it.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "gvm/analysis.h"
+#include "gvm/part.h"
+#include "visibility/surface_visibility.h"
+
+namespace gvm {
+
+struct Analysis::Impl {
+  explicit Impl(Part p) : part(std::move(p)) {}
+  Part part;
+  PartSummary summary;
+  std::vector<Surface> regions, features;
+  AnalysisTiming timing;
+  v1::AnalyzeOptions options;
+  uint32_t surfaces_with_potential_occluders = 0;
+};
+
+namespace analysis_internal {
+
+OcclusionMethod method_of(const v1::AnalyzeOptions& options);
+
+// The exact maps and sizes of one surface, its occluders counted in input faces.
+SurfaceMaps surface_maps(const SolidMesh& mesh, SurfaceVisibility vis, double seconds);
+
+// Input faces (ascending, unique) of a set of triangles.
+std::vector<uint32_t> input_faces(const SolidMesh& mesh, std::span<const uint32_t> triangles);
+
+// The outward normal shared by every triangle, when they all lie in one plane with one
+// orientation.
+std::optional<Direction> common_plane_normal(const SolidMesh& mesh,
+                                             std::span<const uint32_t> triangles);
+
+}  // namespace analysis_internal
+}  // namespace gvm

@@ -1,0 +1,236 @@
+// One planning run: the targets and the surfaces that cannot be reached, the candidates
+// of the mode, the exact set cover, the assignment of every target to one chosen setup,
+// the placement of each setup, and the reasons; then the message.
+#include "gvm/planner/plan.h"
+
+#include <spdlog/spdlog.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+#include <optional>
+
+#include "plan_state.h"
+
+namespace gvm::planner {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::unique_ptr<Mode> make_mode(const v1::PlanOptions& o) {
+  switch (o.mode()) {
+    case v1::PLAN_MODE_ROTARY:
+      return make_rotary_mode(o);
+    case v1::PLAN_MODE_PROBE:
+      return make_probe_mode(o);
+    default:
+      return make_setup_mode(o);
+  }
+}
+
+class Planner {
+ public:
+  Planner(const Analysis& analysis, const v1::PlanOptions& options, const PlanControl& control,
+          int threads)
+      : mode_(make_mode(options)), control_(control) {
+    state_.times.threads = static_cast<uint32_t>(threads);
+    state_.analysis = &analysis;
+    state_.options = options;
+    state_.surfaces = planned_surfaces(analysis, options);
+  }
+
+  StatusOr<SetupPlan> run() {
+    const auto t0 = Clock::now();
+    collect_targets();
+    if (state_.options.split() && !split_unreachable()) return cancelled();
+    if (!keep_going("candidates", 0, 1)) return cancelled();
+    Status covered = cover();
+    if (!covered.ok()) return covered;
+    if (!keep_going("placement", 0, 1)) return cancelled();
+    place_setups();
+    if (!explain_unreachable()) return cancelled();
+    state_.times.total = seconds_since(t0);
+    SetupPlan out;
+    out.message = plan_message(state_);
+    for (const PlacedSetup& s : state_.setups) out.directions.push_back(s.direction);
+    return out;
+  }
+
+ private:
+  static Status cancelled() { return Status(StatusCode::kCancelled, "planning cancelled"); }
+
+  bool keep_going(std::string_view phase, size_t done, size_t total) {
+    if (!control_.progress || control_.progress(phase, done, total)) return true;
+    stopped_ = true;
+    return false;
+  }
+
+  // A target for every planned surface that some setup can reach; the others are
+  // unreachable from their own maps.
+  void collect_targets() {
+    const bool normal_only = state_.options.planar_normal();
+    for (uint32_t i = 0; i < state_.surfaces.size(); ++i) {
+      const Surface& s = *state_.surfaces[i];
+      const DirectionSet directions =
+          s.maps.gvm ? tool_directions(*s.maps.gvm, s.planar_normal, normal_only) : DirectionSet();
+      if (directions.is_empty()) {
+        state_.unreachable.emplace_back(i, reason_of_empty_reach(s, normal_only));
+        continue;
+      }
+      state_.targets.push_back({i, {}, *s.maps.gvm, directions, mode_->reach_of(directions)});
+    }
+  }
+
+  // --split: the pieces of each unreachable surface become targets of their own.
+  bool split_unreachable() {
+    const bool normal_only = state_.options.planar_normal();
+    for (size_t k = 0; k < state_.unreachable.size(); ++k) {
+      UnreachableSurface& u = state_.unreachable[k];
+      if (!keep_going("split", k, state_.unreachable.size())) return false;
+      if (u.reason == v1::UNREACHABLE_REASON_VOID || u.reason == v1::UNREACHABLE_REASON_GVM_NOT_COMPUTED) continue;
+      const Surface& s = *state_.surfaces[u.surface];
+      const std::vector<std::vector<uint32_t>> pieces = state_.analysis->planar_pieces(s.faces);
+      if (pieces.size() < 2) continue;
+      for (const std::vector<uint32_t>& faces : pieces) {
+        StatusOr<Surface> piece = state_.analysis->surface_of(faces);
+        if (!piece.ok()) continue;  // the faces come from the part: cannot fail
+        const DirectionSet directions = piece->maps.gvm ? tool_directions(*piece->maps.gvm, piece->planar_normal, normal_only)
+                                                        : DirectionSet();
+        if (directions.is_empty()) {
+          u.pieces_unreachable.push_back({faces, reason_of_empty_reach(*piece, normal_only)});
+          continue;
+        }
+        state_.targets.push_back({u.surface, faces, *piece->maps.gvm, directions, mode_->reach_of(directions)});
+      }
+    }
+    return true;
+  }
+
+  Status cover() {
+    auto t0 = Clock::now();
+    state_.candidates = mode_->candidates(state_.targets);
+    state_.times.candidates = seconds_since(t0);
+    t0 = Clock::now();
+    CoverOptions options;
+    options.time_limit_seconds = state_.options.time_limit_seconds();
+    options.cancelled = [this] { return !keep_going("set cover", 0, 1); };
+    StatusOr<CoverSolution> solution = solve_set_cover(problem(state_.candidates.candidates), options);
+    if (!solution.ok()) return solution.status();
+    if (solution->cancelled || stopped_) return cancelled();
+    state_.cover = std::move(*solution);
+    if (!state_.candidates.relaxed.empty()) {
+      // Without the clearance requirement every direction is a candidate: its optimum is
+      // a lower bound over the continuum, not only over the stated candidates.
+      StatusOr<CoverSolution> relaxed = solve_set_cover(problem(state_.candidates.relaxed), options);
+      if (relaxed.ok() && !relaxed->cancelled) state_.continuous_lower_bound = relaxed->lower_bound;
+    }
+    state_.times.cover = seconds_since(t0);
+    spdlog::debug("plan: {} targets, {} candidates, cover of {} (bound {})", state_.targets.size(),
+                  state_.candidates.candidates.size(), state_.cover.chosen.size(), state_.cover.lower_bound);
+    return Status::Ok();
+  }
+
+  CoverProblem problem(const std::vector<Candidate>& candidates) const {
+    CoverProblem p;
+    p.items = static_cast<uint32_t>(state_.targets.size());
+    for (const Candidate& c : candidates) p.candidates.push_back(c.targets);
+    return p;
+  }
+
+  // Every target to one chosen setup: the first, in order of decreasing coverage, that
+  // serves it. Setups left with nothing (another setup serves all they would) are dropped.
+  std::vector<std::pair<uint32_t, std::vector<uint32_t>>> assignment() const {
+    const std::vector<Candidate>& all = state_.candidates.candidates;
+    std::vector<uint32_t> order = state_.cover.chosen;
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+      return all[a].targets.size() > all[b].targets.size();
+    });
+    std::vector<std::vector<uint32_t>> assigned(order.size());
+    std::vector<char> done(state_.targets.size(), 0);
+    for (size_t k = 0; k < order.size(); ++k) {
+      for (uint32_t t : all[order[k]].targets) {
+        if (!done[t]) done[t] = 1, assigned[k].push_back(t);
+      }
+    }
+    std::vector<std::pair<uint32_t, std::vector<uint32_t>>> out;
+    for (size_t k = 0; k < order.size(); ++k) {
+      if (!assigned[k].empty()) out.push_back({order[k], std::move(assigned[k])});
+    }
+    return out;
+  }
+
+  void place_setups() {
+    const auto t0 = Clock::now();
+    const auto chosen = assignment();
+    state_.setups.resize(chosen.size());
+    tbb::parallel_for(size_t{0}, chosen.size(), [&](size_t k) {
+      const auto& [candidate, assigned] = chosen[k];
+      state_.setups[k] = mode_->place(state_.candidates.candidates[candidate], state_.targets, assigned);
+    });
+    state_.times.placement = seconds_since(t0);
+  }
+
+  // Reasons for the unreachable surfaces, and targets no candidate serves (cone,
+  // clearance) become unreachable too.
+  bool explain_unreachable() {
+    const auto t0 = Clock::now();
+    for (uint32_t t : state_.cover.uncoverable) {
+      const Target& target = state_.targets[t];
+      if (!target.faces.empty()) {
+        unreachable_of(target.surface).pieces_unreachable.push_back({target.faces, mode_->unserved(target).reason});
+        continue;
+      }
+      const Unserved why = mode_->unserved(target);
+      state_.unreachable.emplace_back(target.surface, why.reason).nearest = why;
+    }
+    for (const PlacedSetup& s : state_.setups) {
+      for (const TargetReach& r : s.reach) {
+        if (!state_.targets[r.target].faces.empty()) ++unreachable_of(state_.targets[r.target].surface).pieces_reached;
+      }
+    }
+    std::sort(state_.unreachable.begin(), state_.unreachable.end(),
+              [](const UnreachableSurface& a, const UnreachableSurface& b) { return a.surface < b.surface; });
+    if (!keep_going("reasons", 0, state_.unreachable.size())) return false;
+    tbb::parallel_for(size_t{0}, state_.unreachable.size(), [&](size_t k) {
+      UnreachableSurface& u = state_.unreachable[k];
+      explain(*state_.analysis, *state_.surfaces[u.surface], u);
+    });
+    state_.times.unreachable = seconds_since(t0);
+    return true;
+  }
+
+  UnreachableSurface& unreachable_of(uint32_t surface) {
+    for (UnreachableSurface& u : state_.unreachable) {
+      if (u.surface == surface) return u;
+    }
+    // Never reached: pieces only come from surfaces already unreachable.
+    return state_.unreachable.emplace_back(surface, v1::UNREACHABLE_REASON_UNSPECIFIED);
+  }
+
+  std::unique_ptr<Mode> mode_;
+  const PlanControl& control_;
+  PlanState state_;
+  bool stopped_ = false;
+};
+
+}  // namespace
+
+StatusOr<SetupPlan> plan(const Analysis& analysis, const v1::PlanOptions& options,
+                         const PlanControl& control) {
+  if (Status s = validate(options); !s.ok()) return s;
+  const v1::PlanOptions applied = with_defaults(options);
+  const int threads = applied.threads() > 0 ? static_cast<int>(applied.threads())
+                                            : tbb::this_task_arena::max_concurrency();
+  tbb::task_arena arena(threads);
+  std::optional<StatusOr<SetupPlan>> out;
+  arena.execute([&] { out.emplace(Planner(analysis, applied, control, threads).run()); });
+  return std::move(*out);
+}
+
+}  // namespace gvm::planner

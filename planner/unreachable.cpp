@@ -1,0 +1,89 @@
+// Why a surface cannot be reached, from the maps the engine already has.
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+#include "placement.h"
+#include "plan_state.h"
+
+namespace gvm::planner {
+namespace {
+
+std::string vector_text(const Direction& d) {
+  const std::array<double, 3> u = d.unit();
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4f, %.4f, %.4f)", u[0], u[1], u[2]);
+  return buf;
+}
+
+// The feature of every input face.
+std::map<uint32_t, uint32_t> feature_of_faces(const Analysis& analysis) {
+  std::map<uint32_t, uint32_t> out;
+  for (const Surface& f : analysis.features()) {
+    for (uint32_t face : f.faces) out[face] = f.id;
+  }
+  return out;
+}
+
+}  // namespace
+
+v1::UnreachableReason reason_of_empty_reach(const Surface& s, bool planar_normal_only) {
+  if (s.maps.status == GvmStatus::kEmptyVoid) return v1::UNREACHABLE_REASON_VOID;
+  if (!s.maps.gvm) return v1::UNREACHABLE_REASON_GVM_NOT_COMPUTED;
+  if (s.maps.lvm.is_empty()) return v1::UNREACHABLE_REASON_SELF_OCCLUDED;
+  if (s.maps.gvm->is_empty()) return v1::UNREACHABLE_REASON_OCCLUDED;
+  if (planar_normal_only && s.planar_normal) return v1::UNREACHABLE_REASON_NOT_ALONG_NORMAL;
+  return v1::UNREACHABLE_REASON_UNSPECIFIED;  // not empty: not for this function
+}
+
+void explain(const Analysis& analysis, const Surface& s, UnreachableSurface& out) {
+  switch (out.reason) {
+    case v1::UNREACHABLE_REASON_VOID:
+      out.detail = "faces of an internal void: never visible from outside";
+      return;
+    case v1::UNREACHABLE_REASON_GVM_NOT_COMPUTED:
+      out.detail = "the analysis skipped the global occlusion (--lvm-only): its GVM is unknown";
+      return;
+    case v1::UNREACHABLE_REASON_SELF_OCCLUDED:
+      out.detail = "LVM(S + N_S) is empty: an undercut of its own shape or of its neighbours";
+      return;
+    case v1::UNREACHABLE_REASON_NOT_ALONG_NORMAL:
+      out.detail = "its GVM (" + s.maps.gvm->description() + ") does not contain its own normal " +
+                   vector_text(*s.planar_normal);
+      return;
+    case v1::UNREACHABLE_REASON_OCCLUDED:
+      break;
+    default:
+      out.detail = out.nearest.detail;
+      return;
+  }
+  // Occluded by the rest of the part: which faces block the most open direction of the
+  // LVM, named by their features.
+  const DirectionSet* lvm[] = {&s.maps.lvm};
+  const Direction probe = place_in(lvm, s.maps.lvm.witness()).direction;
+  out.probed_direction = probe;
+  const std::map<uint32_t, uint32_t> feature = feature_of_faces(analysis);
+  for (uint32_t face : analysis.blocking_faces(s.faces, probe)) {
+    auto it = feature.find(face);
+    if (it != feature.end()) out.blocking_features.push_back(it->second);
+  }
+  std::sort(out.blocking_features.begin(), out.blocking_features.end());
+  out.blocking_features.erase(std::unique(out.blocking_features.begin(), out.blocking_features.end()),
+                              out.blocking_features.end());
+  out.detail = "occluded by the rest of the part: LVM(S + N_S) is " + s.maps.lvm.description() +
+               " but the GVM is empty; along its most open direction " + vector_text(probe) +
+               " the rays are blocked by ";
+  if (out.blocking_features.empty()) {
+    out.detail += "faces met only where they graze (no face crossed)";
+    return;
+  }
+  const size_t shown = std::min<size_t>(out.blocking_features.size(), 8);
+  for (size_t i = 0; i < shown; ++i) {
+    out.detail += (i ? ", " : "") + analysis.features()[out.blocking_features[i]].name;
+  }
+  if (shown < out.blocking_features.size()) {
+    out.detail += " and " + std::to_string(out.blocking_features.size() - shown) + " more";
+  }
+}
+
+}  // namespace gvm::planner
