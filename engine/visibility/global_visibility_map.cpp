@@ -263,10 +263,9 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   spdlog::debug("global occlusion: arrangement of {} arcs: {} vertices, {} edges, {:.2f} s", arcs.size(),
                 arr.vertices().size(), arr.edges().size(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  const auto& faces = arr.faces();
   const auto& half = arr.half_edges();
-  auto in_lvm_face = [&](uint32_t f) { return faces[f].coverage[kLvm] > 0; };
-  auto occluded_face = [&](uint32_t f) { return faces[f].coverage[kOcclusion] > 0; };
+  auto in_lvm_face = [&](uint32_t f) { return arr.coverage(f, kLvm) > 0; };
+  auto occluded_face = [&](uint32_t f) { return arr.coverage(f, kOcclusion) > 0; };
   auto face_in = [&](uint32_t f) { return in_lvm_face(f) && !occluded_face(f); };
   // A cell is in Int(GOM) iff every face around it is covered -- but the points and arcs
   // of the LVM in there may still be visible (rays along them that only graze O): the
@@ -278,7 +277,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
     const auto& edge = arr.edges()[e];
     const uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
-    const bool on_lvm_arc = (edge.arc_layers & (1u << kLvm)) != 0;
+    const bool on_lvm_arc = arr.edge_on_layer(e, kLvm);
     if (!on_lvm_arc && !in_lvm_face(left) && !in_lvm_face(right)) continue;
     if (!occluded_face(left) || !occluded_face(right)) {
       edge_visible[e] = 1;
@@ -296,10 +295,10 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   }
   auto vertex_in = [&](uint32_t v) {
     const auto& vert = arr.vertices()[v];
-    bool in_lvm = (vert.point_layers & (1u << kLvm)) != 0;
+    bool in_lvm = arr.vertex_has_point(v, kLvm);
     bool all_occluded = true;
     for (uint32_t h : vert.out) {
-      in_lvm |= (arr.edges()[half[h].edge].arc_layers & (1u << kLvm)) != 0;
+      in_lvm |= arr.edge_on_layer(half[h].edge, kLvm);
       in_lvm |= in_lvm_face(half[h].face);
       all_occluded &= occluded_face(half[h].face);
     }
