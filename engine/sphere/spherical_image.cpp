@@ -29,16 +29,6 @@ ExactVec point_on_circle(const ExactVec& c) {
   return {};  // c is zero: unreachable for valid arcs
 }
 
-bool face_contains(const Face& f, const ExactVec& u) {
-  if (!f.convex) return point_in_face(f, u);
-  for (const Loop& l : f.loops) {
-    for (const Arc& a : l.arcs) {
-      if (!nonneg(exact::sign_dot(u, a.normal))) return false;
-    }
-  }
-  return true;
-}
-
 // The arc lies in the closed hemisphere {u . n >= 0}.
 bool arc_within(const Arc& arc, const ExactVec& n) {
   if (exact::parallel(arc.normal, n)) return true;  // the whole circle has u . n = 0
@@ -210,6 +200,16 @@ void set_vec(gvm::v1::Vec3* out, const ExactVec& v) {
 }
 
 }  // namespace
+
+bool face_contains(const Face& f, const ExactVec& u) {
+  if (!f.convex) return point_in_face(f, u);
+  for (const Loop& l : f.loops) {
+    for (const Arc& a : l.arcs) {
+      if (!nonneg(exact::sign_dot(u, a.normal))) return false;
+    }
+  }
+  return true;
+}
 
 bool arc_contains(const Arc& arc, const ExactVec& u) {
   if (exact::sign_dot(u, arc.normal) != Sign::kZero) return false;

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "sphere/arrangement.h"
+#include "sphere/image_overlay.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
 #include "visibility/effective_minkowski_envelope.h"
@@ -43,44 +44,6 @@ class SumVertices {
   const SolidMesh& mesh_;
   std::unordered_map<uint64_t, ExactVec> cache_;
 };
-
-// The cells of the LVM as arrangement input: face boundaries with weight 1 (the face on
-// their left), curves with weight 0 (they only mark where the LVM is), points.
-void add_lvm(const sphere::SphericalImage& lvm, std::vector<ArrangementArc>& arcs,
-             std::vector<ArrangementPoint>& points) {
-  auto add_arc = [&](const sphere::Arc& arc, int weight) {
-    std::vector<ExactVec> v = sphere::split_arc(arc);
-    for (size_t i = 0; i + 1 < v.size(); ++i) {
-      arcs.push_back({v[i], v[i + 1], arc.normal, kLvm, weight});
-    }
-  };
-  for (const sphere::Face& f : lvm.faces()) {
-    for (const sphere::Loop& loop : f.loops) {
-      for (const sphere::Arc& arc : loop.arcs) add_arc(arc, 1);
-    }
-  }
-  for (const sphere::Arc& arc : lvm.curves()) add_arc(arc, 0);
-  for (const ExactVec& p : lvm.points()) points.push_back({p, kLvm});
-}
-
-// A direction on none of the given great circles and none of the points: the reference at
-// which coverage is counted directly. Small integer directions are tried in turn; finitely
-// many circles cannot contain them all.
-ExactVec generic_direction(const std::vector<ExactVec>& circles,
-                           const std::vector<ExactVec>& points) {
-  for (int k = 1;; ++k) {
-    ExactVec r = ExactVec::from_point({double(2 * k + 1), double(-3 * k - 5), double(7 * k + 2)});
-    bool ok = true;
-    for (const ExactVec& n : circles) {
-      if (exact::sign_dot(r, n) == Sign::kZero) {
-        ok = false;
-        break;
-      }
-    }
-    for (size_t i = 0; ok && i < points.size(); ++i) ok = !exact::parallel(r, points[i]);
-    if (ok) return r;
-  }
-}
 
 // A back-facing face projects to the convex polygon to the left of its edges (its
 // vertices run counter-clockwise around the outward normal, seen from outside).
@@ -119,7 +82,7 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
     faces.push_back(std::move(v));
   }
-  const ExactVec r = generic_direction(circles, points);
+  const ExactVec r = sphere::generic_direction(circles, points);
   OccludingCells cells;
   cells.count = faces.size();
   cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[i][0]).unit; };
@@ -153,7 +116,7 @@ Occlusion convex_decomposition_occlusion(const SolidMesh& mesh, std::span<const 
       for (const sphere::Arc& a : f.loops[0].arcs) circles.push_back(a.normal);
     }
   }
-  const ExactVec r = generic_direction(circles, points);
+  const ExactVec r = sphere::generic_direction(circles, points);
   OccludingCells cells;
   cells.count = maps.size();
   cells.direction = [&](uint32_t i) {
@@ -237,7 +200,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
-  add_lvm(lvm, arcs, points);
+  sphere::add_image(lvm, kLvm, arcs, points);
 
   // The reference direction lies on no circle of the LVM or of any cell, and on no point.
   std::vector<ExactVec> circles, point_dirs;
