@@ -244,6 +244,33 @@ std::vector<ExactVec> split_arc(const Arc& arc) {
   return {arc.start, cross(c, arc.start), -arc.start, arc.end};
 }
 
+std::vector<ExactVec> split_arc_quarters(const Arc& arc) {
+  const ExactVec& c = arc.normal;
+  if (arc.full) {
+    ExactVec p = point_on_circle(c);
+    ExactVec q = cross(c, p);
+    return {p, q, -p, -q, p};
+  }
+  // The quarter points n x start, -start, -(n x start) that lie strictly before the end:
+  // the end's quadrant, from the signs of its sine and cosine against the start.
+  const Sign sine = exact::sign_det(c, arc.start, arc.end);
+  const Sign cosine = exact::sign_dot(arc.start, arc.end);
+  int quarters = 0;  // whole quarter turns strictly inside the arc
+  if (sine == Sign::kPositive) {
+    quarters = cosine == Sign::kNegative ? 1 : 0;  // (90, 180) : (0, 90]
+  } else if (sine == Sign::kZero) {
+    quarters = cosine == Sign::kNegative ? 1 : 0;  // 180 : a zero-length arc
+  } else {
+    quarters = cosine == Sign::kPositive ? 3 : 2;  // (270, 360) : (180, 270]
+  }
+  std::vector<ExactVec> out = {arc.start};
+  const ExactVec turn = cross(c, arc.start);
+  const ExactVec quarter_points[3] = {turn, -arc.start, -turn};
+  for (int i = 0; i < quarters; ++i) out.push_back(quarter_points[i]);
+  out.push_back(arc.end);
+  return out;
+}
+
 SphericalImage SphericalImage::full_sphere() {
   SphericalImage s;
   s.full_ = true;
