@@ -49,8 +49,16 @@ inline SphericalImage combine(const std::vector<SphericalImage>& parts) {
 }
 
 // LVM of 1 to 5 normals spread around a common direction: mostly convex polygons and
-// lunes, with every degenerate outcome now and then.
+// lunes, with every degenerate outcome now and then. Half of the time the normals come
+// from the 26 directions with coordinates in {-1, 0, 1}, so that different sets share
+// circles and vertices (arcs along one another's boundaries, faces sharing edges).
 inline SphericalImage random_lvm(std::mt19937_64& rng) {
+  if (uniform(rng, 0, 1) == 0) {
+    std::vector<ExactVec> normals;
+    const int k = uniform(rng, 1, 4);
+    for (int i = 0; i < k; ++i) normals.push_back(random_direction(rng, 1));
+    return local_visibility_map(normals);
+  }
   const I3 base = random_int_vec(rng, 4);
   const int k = uniform(rng, 1, 5);
   const int spread = uniform(rng, 1, 4);
@@ -67,8 +75,9 @@ inline SphericalImage random_lvm(std::mt19937_64& rng) {
 
 // One arc: minor, exactly 180 degrees (antipodal ends), longer than 180, or a full circle.
 inline Arc random_arc(std::mt19937_64& rng) {
+  const int r = uniform(rng, 1, 3);  // r = 1: on the circles of the {-1, 0, 1} normals often
   for (;;) {
-    const ExactVec p = random_direction(rng, 3), q = random_direction(rng, 3);
+    const ExactVec p = random_direction(rng, r), q = random_direction(rng, r);
     const ExactVec n = exact::cross(p, q);
     if (exact::is_zero(n)) continue;
     switch (uniform(rng, 0, 5)) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sphere/clearance.h"
 #include "sphere/local_visibility_map.h"
 #include "sphere/set_operations.h"
 #include "sphere_random_images.h"
@@ -53,6 +54,27 @@ void expect_canonical(const SphericalImage& r) {
   }
 }
 
+// Operands of every kind, including results of set operations (general faces, holes,
+// faces touching at points, curves and points beside faces).
+SphericalImage random_operand(std::mt19937_64& rng) {
+  switch (testing::uniform(rng, 0, 7)) {
+    case 0:
+      return set_difference(testing::random_image(rng), testing::random_image(rng));
+    case 1:
+      return set_union(testing::random_image(rng), testing::random_image(rng));
+    default:
+      return testing::random_image(rng);
+  }
+}
+
+// u in the interior of b's 2-cells, off their boundaries, or on them: then a tiny cap
+// around u (far below the angular size of these small-integer constructions) lies in b
+// iff u is interior -- an independent decision by the clearance module.
+bool in_interior(const SphericalImage& b, const ExactVec& u) {
+  if (!testing::on_face_boundary(b, u)) return testing::in_some_face(b, u);
+  return contains_cap(b, u, 0x1p-80);
+}
+
 TEST(SphereSetOperations, RandomOperandsAgainstTheDefinition) {
   constexpr uint64_t kBaseSeed = 20261126;
   int subsets = 0, difference_checked = 0;
@@ -60,7 +82,7 @@ TEST(SphereSetOperations, RandomOperandsAgainstTheDefinition) {
     const uint64_t seed = kBaseSeed + i;
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937_64 rng(seed);
-    const SphericalImage a = testing::random_image(rng), b = testing::random_image(rng);
+    const SphericalImage a = random_operand(rng), b = random_operand(rng);
     SCOPED_TRACE("a: " + a.description() + "; b: " + b.description());
     const SphericalImage u = set_union(a, b), n = set_intersection(a, b), d = set_difference(a, b);
     expect_canonical(u);
@@ -73,14 +95,12 @@ TEST(SphereSetOperations, RandomOperandsAgainstTheDefinition) {
       const bool in_a = a.contains(x), in_b = b.contains(x);
       ASSERT_EQ(u.contains(x), in_a || in_b) << u.description();
       ASSERT_EQ(n.contains(x), in_a && in_b) << n.description();
-      // a - Int(b): everywhere between a - b and a; exactly known off b's face boundaries.
+      // a - Int(b), with the interior decided off and on b's face boundaries.
       const bool in_d = d.contains(x);
       if (in_d) ASSERT_TRUE(in_a) << d.description();
       if (in_a && !in_b) ASSERT_TRUE(in_d) << d.description();
-      if (!testing::on_face_boundary(b, x)) {
-        ASSERT_EQ(in_d, in_a && !testing::in_some_face(b, x)) << d.description();
-        ++difference_checked;
-      }
+      ASSERT_EQ(in_d, in_a && !in_interior(b, x)) << d.description();
+      difference_checked += testing::on_face_boundary(b, x);
       counterexample |= in_a && !in_b;
     }
     if (counterexample) ASSERT_FALSE(a_in_b);
@@ -92,7 +112,7 @@ TEST(SphereSetOperations, RandomOperandsAgainstTheDefinition) {
     ASSERT_EQ(a_in_b, is_subset(a, n));
   }
   EXPECT_GT(subsets, 20);
-  EXPECT_GT(difference_checked, 10000);
+  EXPECT_GT(difference_checked, 1000);  // directions on b's face boundaries
 }
 
 TEST(SphereSetOperations, DifferenceKeepsArcsAndPointsOfAOnTheBoundaryOfB) {
