@@ -40,7 +40,7 @@ const ExactVec kReference = v(-3, 5, -17);  // far from everything below, on no 
 
 // Coverage selections: faces with coverage >= k in layer 0.
 SphericalImage at_least(const Arrangement& arr, int k) {
-  return arr.extract([&](uint32_t f) { return arr.faces()[f].coverage[0] >= k; },
+  return arr.extract([&](uint32_t f) { return arr.coverage(f, 0) >= k; },
                      [](uint32_t) { return false; }, [](uint32_t) { return false; });
 }
 
@@ -89,7 +89,7 @@ TEST(SphereArrangement, CollinearEdgesAndAHoleAndSeparateComponents) {
   const int ref[] = {0};
   Arrangement arr(arcs, {}, 1, kReference, ref);
   SphericalImage exactly_one = arr.extract(
-      [&](uint32_t f) { return arr.faces()[f].coverage[0] == 1; }, [](uint32_t) { return false; },
+      [&](uint32_t f) { return arr.coverage(f, 0) == 1; }, [](uint32_t) { return false; },
       [](uint32_t) { return false; });
   // Big square minus the inner one, joined with the neighbour across the shared edge.
   ASSERT_EQ(exactly_one.faces().size(), 1u);
@@ -99,7 +99,7 @@ TEST(SphereArrangement, CollinearEdgesAndAHoleAndSeparateComponents) {
                     convex_polygon(square(3, -1, 5, 1)).area();
   EXPECT_NEAR(exactly_one.area(), expected, 1e-12);
   SphericalImage negative = arr.extract(
-      [&](uint32_t f) { return arr.faces()[f].coverage[0] < 0; }, [](uint32_t) { return false; },
+      [&](uint32_t f) { return arr.coverage(f, 0) < 0; }, [](uint32_t) { return false; },
       [](uint32_t) { return false; });
   EXPECT_EQ(negative.faces().size(), 1u);
 }
@@ -114,7 +114,7 @@ TEST(SphereArrangement, ArcThroughTouchingOccludersKeepsTheCornerPoint) {
   arcs.push_back({from, to, exact::cross(from, to), 1, 0});
   const int ref[] = {0, 0};
   Arrangement arr(arcs, {}, 2, kReference, ref);
-  auto occluded_face = [&](uint32_t f) { return arr.faces()[f].coverage[0] >= 1; };
+  auto occluded_face = [&](uint32_t f) { return arr.coverage(f, 0) >= 1; };
   auto occluded_edge = [&](uint32_t e) {
     return occluded_face(arr.half_edges()[2 * e].face) &&
            occluded_face(arr.half_edges()[2 * e + 1].face);
@@ -127,13 +127,13 @@ TEST(SphereArrangement, ArcThroughTouchingOccludersKeepsTheCornerPoint) {
   };
   auto on_l_vertex = [&](uint32_t vi) {
     for (uint32_t h : arr.vertices()[vi].out) {
-      if (arr.edges()[arr.half_edges()[h].edge].arc_layers & 2u) return true;
+      if (arr.edge_on_layer(arr.half_edges()[h].edge, 1)) return true;
     }
     return false;
   };
   SphericalImage gvm = arr.extract(
       [](uint32_t) { return false; },
-      [&](uint32_t e) { return (arr.edges()[e].arc_layers & 2u) && !occluded_edge(e); },
+      [&](uint32_t e) { return arr.edge_on_layer(e, 1) && !occluded_edge(e); },
       [&](uint32_t vi) { return on_l_vertex(vi) && !occluded_vertex(vi); });
   // Two pieces of the arc outside the squares, and the corner point between them: the
   // corner is not in the interior of the union of the two open squares.
@@ -153,11 +153,11 @@ TEST(SphereArrangement, ArcOnTheSharedEdgeOfTwoOccludersIsOccluded) {
   arcs.push_back({from, to, exact::cross(from, to), 1, 0});
   const int ref[] = {0, 0};
   Arrangement arr(arcs, {}, 2, kReference, ref);
-  auto occluded_face = [&](uint32_t f) { return arr.faces()[f].coverage[0] >= 1; };
+  auto occluded_face = [&](uint32_t f) { return arr.coverage(f, 0) >= 1; };
   SphericalImage gvm = arr.extract(
       [](uint32_t) { return false; },
       [&](uint32_t e) {
-        return (arr.edges()[e].arc_layers & 2u) &&
+        return arr.edge_on_layer(e, 1) &&
                !(occluded_face(arr.half_edges()[2 * e].face) &&
                  occluded_face(arr.half_edges()[2 * e + 1].face));
       },
@@ -173,13 +173,13 @@ TEST(SphereArrangement, IsolatedPointsAreLocated) {
   Arrangement arr(arcs, points, 2, kReference, ref);
   auto occluded_vertex = [&](uint32_t vi) {
     for (uint32_t h : arr.vertices()[vi].out) {
-      if (arr.faces()[arr.half_edges()[h].face].coverage[0] < 1) return false;
+      if (arr.coverage(arr.half_edges()[h].face, 0) < 1) return false;
     }
     return !arr.vertices()[vi].out.empty();
   };
   SphericalImage gvm = arr.extract(
       [](uint32_t) { return false; }, [](uint32_t) { return false; },
-      [&](uint32_t vi) { return (arr.vertices()[vi].point_layers & 2u) && !occluded_vertex(vi); });
+      [&](uint32_t vi) { return arr.vertex_has_point(vi, 1) && !occluded_vertex(vi); });
   // +z is inside the open square: occluded. -z is far: kept. (2, 0, 8) is on the
   // square's boundary, not in its interior: kept.
   ASSERT_EQ(gvm.points().size(), 2u);

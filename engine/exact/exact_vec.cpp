@@ -177,6 +177,26 @@ Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
   });
 }
 
+Sign sign_sin2_angle_minus(const ExactVec& a, const ExactVec& b, double s2) {
+  return filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    auto x = eval<T>(a), y = eval<T>(b);
+    auto w = cross3(x, y);
+    T aa = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], bb = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+    return (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) - T(s2) * aa * bb;
+  });
+}
+
+Sign sign_cos2_angle_minus(const ExactVec& a, const ExactVec& b, double s2) {
+  return filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    auto x = eval<T>(a), y = eval<T>(b);
+    T d = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+    T aa = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], bb = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+    return d * d - T(s2) * aa * bb;
+  });
+}
+
 bool is_zero(const ExactVec& a) {
   const ExactVec::Node* n = peel(a.node());
   if (n && n->op == Op::kCross && peel(n->a.get()) == peel(n->b.get())) return true;

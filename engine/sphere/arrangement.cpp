@@ -1,6 +1,7 @@
 #include "sphere/arrangement.h"
 
 #include "sphere/box_tree.h"
+#include "sphere/union_find.h"
 
 #include <algorithm>
 #include <array>
@@ -20,19 +21,6 @@ bool strictly_inside(const ArrangementArc& a, const ExactVec& x) {
   return positive(exact::sign_det(a.normal, a.from, x)) &&
          positive(exact::sign_det(a.normal, x, a.to));
 }
-
-class UnionFind {
- public:
-  explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  uint32_t find(uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(uint32_t a, uint32_t b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<uint32_t> parent_;
-};
 
 Box point_box(const exact::UnitEstimate& e) {
   Box b;
@@ -61,9 +49,47 @@ Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
 }  // namespace
 
 Arrangement::Arrangement(std::span<const ArrangementArc> arcs,
+                         std::span<const ArrangementPoint> points, const ExactVec& reference) {
+  build_with_bridges(arcs, points, reference);
+}
+
+Arrangement::Arrangement(std::span<const ArrangementArc> arcs,
                          std::span<const ArrangementPoint> points, int layers,
-                         const ExactVec& reference, std::span<const int> reference_coverage) {
-  build(arcs, points, reference);
+                         const ExactVec& reference, std::span<const int> reference_coverage)
+    : Arrangement(arcs, points, reference) {
+  label_faces(layers, reference_coverage);
+}
+
+bool Arrangement::edge_on_layer(uint32_t e, int k) const {
+  for (const LayerWeight& lw : edge_layers(e)) {
+    if (lw.layer == k) return true;
+  }
+  return false;
+}
+
+int Arrangement::edge_weight(uint32_t e, int k) const {
+  for (const LayerWeight& lw : edge_layers(e)) {
+    if (lw.layer == k) return lw.weight;
+  }
+  return 0;
+}
+
+bool Arrangement::vertex_has_point(uint32_t v, int k) const {
+  for (int layer : vertex_points(v)) {
+    if (layer == k) return true;
+  }
+  return false;
+}
+
+uint32_t Arrangement::reference_face() const {
+  const auto& out = vertices_[reference_vertex_].out;
+  return out.empty() ? 0 : half_[out[0]].face;
+}
+
+void Arrangement::build_with_bridges(std::span<const ArrangementArc> arcs,
+                                     std::span<const ArrangementPoint> points,
+                                     const ExactVec& reference) {
+  Recorded recorded = build(arcs, points, reference);
   // Join the components that do not touch by bridges to the component of vertex 0, then
   // build again: bridges may cross other arcs, which only adds connections.
   UnionFind uf(vertices_.size());
@@ -111,13 +137,14 @@ Arrangement::Arrangement(std::span<const ArrangementArc> arcs,
       with_bridges.push_back({a, b, exact::cross(a, b), -1, 0});
     }
   }
-  if (with_bridges.size() != arcs.size()) build(with_bridges, points, reference);
+  if (with_bridges.size() != arcs.size()) recorded = build(with_bridges, points, reference);
+  index_layers(std::move(recorded));
   link_half_edges();
-  label_faces(layers, reference_coverage);
 }
 
-void Arrangement::build(std::span<const ArrangementArc> input,
-                        std::span<const ArrangementPoint> points, const ExactVec& reference) {
+Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
+                                         std::span<const ArrangementPoint> points,
+                                         const ExactVec& reference) {
   vertices_.clear();
   edges_.clear();
   // Arcs of zero length carry nothing.
@@ -219,12 +246,13 @@ void Arrangement::build(std::span<const ArrangementArc> input,
     uint32_t r = same.find(k);
     if (vertex_of_root[r] == UINT32_MAX) {
       vertex_of_root[r] = static_cast<uint32_t>(vertices_.size());
-      vertices_.push_back({occ[r], {}, 0});
+      vertices_.push_back({occ[r], {}});
     }
     vertex_of[k] = vertex_of_root[r];
   }
+  Recorded recorded;
   for (size_t k = 0; k < points.size(); ++k) {
-    vertices_[vertex_of[point_occ[k]]].point_layers |= 1u << points[k].layer;
+    recorded.points.push_back({vertex_of[point_occ[k]], points[k].layer});
   }
   reference_vertex_ = vertex_of[reference_occ];
 
@@ -254,15 +282,54 @@ void Arrangement::build(std::span<const ArrangementArc> input,
         e.normal = arc.normal;
         edges_.push_back(e);
       }
-      Edge& e = edges_[it->second];
-      const bool along = e.v0 == a;
       if (arc.layer >= 0) {
-        e.weight[arc.layer] += along ? arc.weight : -arc.weight;
-        e.arc_layers |= 1u << arc.layer;
-        e.bridge_only = false;
+        const bool along = edges_[it->second].v0 == a;
+        recorded.on_edges.push_back({it->second, arc.layer, along ? arc.weight : -arc.weight});
       }
     }
   }
+  return recorded;
+}
+
+void Arrangement::index_layers(Recorded recorded) {
+  // Counting sort by edge, then one entry per layer with the weights summed.
+  std::vector<uint32_t> begin(edges_.size() + 1, 0);
+  for (const Contribution& c : recorded.on_edges) ++begin[c.edge + 1];
+  for (size_t e = 0; e < edges_.size(); ++e) begin[e + 1] += begin[e];
+  std::vector<LayerWeight> by_edge(recorded.on_edges.size());
+  {
+    std::vector<uint32_t> fill(begin.begin(), begin.end() - 1);
+    for (const Contribution& c : recorded.on_edges) by_edge[fill[c.edge]++] = {c.layer, c.weight};
+  }
+  recorded.on_edges = {};
+  edge_layer_begin_.assign(edges_.size() + 1, 0);
+  edge_layer_.clear();
+  edge_layer_.reserve(by_edge.size());
+  for (size_t e = 0; e < edges_.size(); ++e) {
+    auto first = by_edge.begin() + begin[e], last = by_edge.begin() + begin[e + 1];
+    if (last - first > 1) {
+      std::sort(first, last, [](const LayerWeight& x, const LayerWeight& y) { return x.layer < y.layer; });
+    }
+    for (auto it = first; it != last; ++it) {
+      if (edge_layer_.size() > edge_layer_begin_[e] && edge_layer_.back().layer == it->layer) {
+        edge_layer_.back().weight += it->weight;
+      } else {
+        edge_layer_.push_back(*it);
+      }
+    }
+    edge_layer_begin_[e + 1] = static_cast<uint32_t>(edge_layer_.size());
+  }
+  // Point layers per vertex, sorted and distinct.
+  std::sort(recorded.points.begin(), recorded.points.end());
+  recorded.points.erase(std::unique(recorded.points.begin(), recorded.points.end()),
+                        recorded.points.end());
+  point_layer_begin_.assign(vertices_.size() + 1, 0);
+  point_layer_.clear();
+  for (auto [v, layer] : recorded.points) {
+    ++point_layer_begin_[v + 1];
+    point_layer_.push_back(layer);
+  }
+  for (size_t v = 0; v < vertices_.size(); ++v) point_layer_begin_[v + 1] += point_layer_begin_[v];
 }
 
 void Arrangement::link_half_edges() {
@@ -314,19 +381,20 @@ void Arrangement::link_half_edges() {
   for (uint32_t h = 0; h < half_.size(); ++h) {
     if (seen[h]) continue;
     const uint32_t f = static_cast<uint32_t>(faces_.size());
-    faces_.push_back({h, {}});
+    faces_.push_back({h});
     for (uint32_t g = h; !seen[g]; g = half_[g].next) {
       seen[g] = true;
       half_[g].face = f;
     }
   }
-  if (faces_.empty()) faces_.push_back({UINT32_MAX, {}});  // no arcs: the whole sphere
+  if (faces_.empty()) faces_.push_back({UINT32_MAX});  // no arcs: the whole sphere
 }
 
 void Arrangement::label_faces(int layers, std::span<const int> reference_coverage) {
-  const auto& ref_out = vertices_[reference_vertex_].out;
-  const uint32_t start = ref_out.empty() ? 0 : half_[ref_out[0]].face;
-  for (int k = 0; k < layers; ++k) faces_[start].coverage[k] = reference_coverage[k];
+  layers_ = layers;
+  coverage_.assign(faces_.size() * size_t(layers), 0);
+  const uint32_t start = reference_face();
+  std::copy_n(reference_coverage.begin(), layers, coverage_.begin() + size_t(start) * size_t(layers));
   std::vector<bool> known(faces_.size(), false);
   known[start] = true;
   std::vector<uint32_t> queue = {start};
@@ -338,135 +406,18 @@ void Arrangement::label_faces(int layers, std::span<const int> reference_coverag
       const uint32_t g = half_[half_[h].twin].face;
       if (!known[g]) {
         known[g] = true;
-        const Edge& e = edges_[half_[h].edge];
-        for (int k = 0; k < layers; ++k) {
-          // The face of h is on h's left: coverage(left) - coverage(right) = +-weight.
-          faces_[g].coverage[k] =
-              faces_[f].coverage[k] - (half_[h].forward ? e.weight[k] : -e.weight[k]);
+        int* to = coverage_.data() + size_t(g) * size_t(layers);
+        const int* from = coverage_.data() + size_t(f) * size_t(layers);
+        std::copy_n(from, layers, to);
+        // The face of h is on h's left: coverage(left) - coverage(right) = +-weight.
+        for (const LayerWeight& lw : edge_layers(half_[h].edge)) {
+          if (lw.layer < layers) to[lw.layer] -= half_[h].forward ? lw.weight : -lw.weight;
         }
         queue.push_back(g);
       }
       h = half_[h].next;
     } while (h != faces_[f].first_half_edge);
   }
-}
-
-SphericalImage Arrangement::extract(const std::function<bool(uint32_t)>& face_in,
-                                    const std::function<bool(uint32_t)>& edge_in,
-                                    const std::function<bool(uint32_t)>& vertex_in) const {
-  SphericalImage out;
-  std::vector<char> fin(faces_.size());
-  for (uint32_t f = 0; f < faces_.size(); ++f) fin[f] = face_in(f);
-  if (half_.empty()) {
-    if (fin[0]) return SphericalImage::full_sphere();
-  } else if (std::all_of(fin.begin(), fin.end(), [](char c) { return c; })) {
-    return SphericalImage::full_sphere();
-  }
-  auto oriented = [&](uint32_t h) {
-    const Edge& e = edges_[half_[h].edge];
-    return half_[h].forward ? e.normal : -e.normal;
-  };
-  auto dest = [&](uint32_t h) { return half_[half_[h].twin].origin; };
-
-  // 2-cells: boundary half-edges have a selected face on the left only. Loops follow the
-  // boundary around each vertex; faces joined across edges form one polygon.
-  UnionFind group(faces_.size());
-  std::vector<bool> boundary(half_.size(), false);
-  for (uint32_t h = 0; h < half_.size(); ++h) {
-    const uint32_t f = half_[h].face, g = half_[half_[h].twin].face;
-    if (fin[f] && fin[g]) group.unite(f, g);
-    boundary[h] = fin[f] && !fin[g];
-  }
-  std::vector<std::vector<Loop>> polygon_loops(faces_.size());
-  std::vector<bool> used(half_.size(), false);
-  for (uint32_t h0 = 0; h0 < half_.size(); ++h0) {
-    if (!boundary[h0] || used[h0]) continue;
-    Loop loop;
-    uint32_t h = h0;
-    do {
-      used[h] = true;
-      Arc arc{vertices_[half_[h].origin].p, vertices_[dest(h)].p, oriented(h), false};
-      if (!loop.arcs.empty() && exact::same_direction(loop.arcs.back().normal, arc.normal)) {
-        loop.arcs.back().end = arc.end;
-      } else {
-        loop.arcs.push_back(arc);
-      }
-      uint32_t g = half_[h].next;
-      while (!boundary[g]) g = half_[half_[g].twin].next;
-      h = g;
-    } while (h != h0);
-    if (loop.arcs.size() > 1 && exact::same_direction(loop.arcs.back().normal, loop.arcs.front().normal)) {
-      loop.arcs.front().start = loop.arcs.back().start;
-      loop.arcs.pop_back();
-    }
-    if (loop.arcs.size() == 1) loop.arcs[0].full = true;  // a whole great circle
-    polygon_loops[group.find(half_[h0].face)].push_back(std::move(loop));
-  }
-  for (auto& loops : polygon_loops) {
-    if (!loops.empty()) out.add_face({std::move(loops), false});
-  }
-
-  // 1-cells: selected edges with no selected face on either side, merged along circles.
-  std::vector<bool> curve(edges_.size(), false);
-  for (uint32_t e = 0; e < edges_.size(); ++e) {
-    curve[e] = edge_in(e) && !fin[half_[2 * e].face] && !fin[half_[2 * e + 1].face];
-  }
-  std::vector<bool> taken(edges_.size(), false);
-  std::vector<bool> on_curve(vertices_.size(), false);
-  for (uint32_t e = 0; e < edges_.size(); ++e) {
-    if (!curve[e]) continue;
-    on_curve[edges_[e].v0] = on_curve[edges_[e].v1] = true;
-  }
-  // Continuation of a curve through vertex v along the same circle, if unique.
-  auto continuation = [&](uint32_t v, uint32_t e) -> int64_t {
-    int64_t found = -1;
-    int count = 0;
-    for (uint32_t h : vertices_[v].out) {
-      uint32_t f = half_[h].edge;
-      if (f == e || !curve[f]) continue;
-      ++count;
-      if (exact::parallel(edges_[f].normal, edges_[e].normal)) found = f;
-    }
-    return count == 1 ? found : -1;
-  };
-  for (uint32_t e0 = 0; e0 < edges_.size(); ++e0) {
-    if (!curve[e0] || taken[e0]) continue;
-    // Walk back to the start of the maximal run on one circle, then forward.
-    uint32_t e = e0, v = edges_[e0].v0;
-    for (size_t guard = 0; guard < edges_.size(); ++guard) {
-      int64_t p = continuation(v, e);
-      if (p < 0 || static_cast<uint32_t>(p) == e0) break;
-      e = static_cast<uint32_t>(p);
-      v = edges_[e].v0 == v ? edges_[e].v1 : edges_[e].v0;
-    }
-    // Now walk forward from vertex v through edge e.
-    uint32_t start_v = v;
-    ExactVec n = edges_[e].v0 == v ? edges_[e].normal : -edges_[e].normal;
-    uint32_t cur_v = v;
-    bool closed = false;
-    while (true) {
-      taken[e] = true;
-      cur_v = edges_[e].v0 == cur_v ? edges_[e].v1 : edges_[e].v0;
-      if (cur_v == start_v) {
-        closed = true;
-        break;
-      }
-      int64_t nx = continuation(cur_v, e);
-      if (nx < 0 || taken[nx]) break;
-      e = static_cast<uint32_t>(nx);
-    }
-    Arc arc{vertices_[start_v].p, vertices_[cur_v].p, n, closed};
-    out.add_curve(arc);
-  }
-
-  // 0-cells.
-  for (uint32_t v = 0; v < vertices_.size(); ++v) {
-    if (on_curve[v] || !vertex_in(v)) continue;
-    bool in_face = false;
-    for (uint32_t h : vertices_[v].out) in_face |= fin[half_[h].face] != 0;
-    if (!in_face) out.add_point(vertices_[v].p);
-  }
-  return out;
 }
 
 }  // namespace gvm::sphere

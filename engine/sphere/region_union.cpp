@@ -11,15 +11,14 @@ Region positive_region(std::span<const ArrangementArc> arcs, const exact::ExactV
   for (ArrangementArc& a : input) a.layer = 0;
   const Arrangement arr(input, {}, 1, reference, coverage);
   const auto& half = arr.half_edges();
-  const auto& faces = arr.faces();
   Region region;
   region.contains_reference = reference_coverage > 0;
   region.arrangement_vertices = arr.vertices().size();
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
     const Arrangement::Edge& edge = arr.edges()[e];
     // half[2e] runs v0 -> v1 with its face on the left.
-    const bool left = faces[half[2 * e].face].coverage[0] > 0;
-    const bool right = faces[half[2 * e + 1].face].coverage[0] > 0;
+    const bool left = arr.coverage(half[2 * e].face, 0) > 0;
+    const bool right = arr.coverage(half[2 * e + 1].face, 0) > 0;
     if (left == right) continue;
     const exact::ExactVec& a = arr.vertices()[edge.v0].p;
     const exact::ExactVec& b = arr.vertices()[edge.v1].p;

@@ -10,8 +10,14 @@
 // is in B.
 //
 // Results are canonical as Arrangement::extract makes them (faces merged across edges,
-// consecutive arcs on one circle merged, curves and points never inside faces); faces are
-// general (convex = false) unless both operands' faces were convex and nothing was cut.
+// consecutive arcs on one circle merged, curves and points never inside faces). A result
+// face is marked convex when it is one (one loop, every vertex in the closed hemisphere of
+// every arc, checked exactly; very large faces stay general), so results compare equal
+// (operator==) to the convex faces of local visibility maps; other faces are general
+// (convex = false), which contains() handles exactly.
+//
+// The operands may be any closed sets: overlapping 2-cells (a point is in the set when
+// some 2-cell covers it), convex or general faces, the full sphere, the empty set.
 #pragma once
 
 #include "sphere/spherical_image.h"

@@ -28,16 +28,6 @@ ExactVec point_on_circle(const ExactVec& c) {
   return {};  // c is zero: unreachable for valid arcs
 }
 
-bool face_contains(const Face& f, const ExactVec& u) {
-  if (!f.convex) return point_in_face(f, u);
-  for (const Loop& l : f.loops) {
-    for (const Arc& a : l.arcs) {
-      if (!nonneg(exact::sign_dot(u, a.normal))) return false;
-    }
-  }
-  return true;
-}
-
 // The arc lies in the closed hemisphere {u . n >= 0}.
 bool arc_within(const Arc& arc, const ExactVec& n) {
   if (exact::parallel(arc.normal, n)) return true;  // the whole circle has u . n = 0
@@ -204,6 +194,16 @@ std::string describe_curve(const Arc& a) {
 
 }  // namespace
 
+bool face_contains(const Face& f, const ExactVec& u) {
+  if (!f.convex) return point_in_face(f, u);
+  for (const Loop& l : f.loops) {
+    for (const Arc& a : l.arcs) {
+      if (!nonneg(exact::sign_dot(u, a.normal))) return false;
+    }
+  }
+  return true;
+}
+
 bool arc_contains(const Arc& arc, const ExactVec& u) {
   if (exact::sign_dot(u, arc.normal) != Sign::kZero) return false;
   if (arc.full) return true;
@@ -235,6 +235,33 @@ std::vector<ExactVec> split_arc(const Arc& arc) {
     return {arc.start, cross(c, arc.start), arc.end};
   }
   return {arc.start, cross(c, arc.start), -arc.start, arc.end};
+}
+
+std::vector<ExactVec> split_arc_quarters(const Arc& arc) {
+  const ExactVec& c = arc.normal;
+  if (arc.full) {
+    ExactVec p = point_on_circle(c);
+    ExactVec q = cross(c, p);
+    return {p, q, -p, -q, p};
+  }
+  // The quarter points n x start, -start, -(n x start) that lie strictly before the end:
+  // the end's quadrant, from the signs of its sine and cosine against the start.
+  const Sign sine = exact::sign_det(c, arc.start, arc.end);
+  const Sign cosine = exact::sign_dot(arc.start, arc.end);
+  int quarters = 0;  // whole quarter turns strictly inside the arc
+  if (sine == Sign::kPositive) {
+    quarters = cosine == Sign::kNegative ? 1 : 0;  // (90, 180) : (0, 90]
+  } else if (sine == Sign::kZero) {
+    quarters = cosine == Sign::kNegative ? 1 : 0;  // 180 : a zero-length arc
+  } else {
+    quarters = cosine == Sign::kPositive ? 3 : 2;  // (270, 360) : (180, 270]
+  }
+  std::vector<ExactVec> out = {arc.start};
+  const ExactVec turn = cross(c, arc.start);
+  const ExactVec quarter_points[3] = {turn, -arc.start, -turn};
+  for (int i = 0; i < quarters; ++i) out.push_back(quarter_points[i]);
+  out.push_back(arc.end);
+  return out;
 }
 
 SphericalImage SphericalImage::full_sphere() {

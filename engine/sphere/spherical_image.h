@@ -46,6 +46,8 @@ struct Face {
 
 // True iff direction u lies on the closed arc (exact; arcs of any length, full circles).
 bool arc_contains(const Arc& arc, const exact::ExactVec& u);
+// True iff direction u lies in the closed 2-cell (exact; convex or general).
+bool face_contains(const Face& f, const exact::ExactVec& u);
 
 class SphericalImage {
  public:

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "sphere/arrangement.h"
+#include "sphere/image_overlay.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
 #include "visibility/effective_minkowski_envelope.h"
@@ -43,44 +44,6 @@ class SumVertices {
   const SolidMesh& mesh_;
   std::unordered_map<uint64_t, ExactVec> cache_;
 };
-
-// The cells of the LVM as arrangement input: face boundaries with weight 1 (the face on
-// their left), curves with weight 0 (they only mark where the LVM is), points.
-void add_lvm(const sphere::SphericalImage& lvm, std::vector<ArrangementArc>& arcs,
-             std::vector<ArrangementPoint>& points) {
-  auto add_arc = [&](const sphere::Arc& arc, int weight) {
-    std::vector<ExactVec> v = sphere::split_arc(arc);
-    for (size_t i = 0; i + 1 < v.size(); ++i) {
-      arcs.push_back({v[i], v[i + 1], arc.normal, kLvm, weight});
-    }
-  };
-  for (const sphere::Face& f : lvm.faces()) {
-    for (const sphere::Loop& loop : f.loops) {
-      for (const sphere::Arc& arc : loop.arcs) add_arc(arc, 1);
-    }
-  }
-  for (const sphere::Arc& arc : lvm.curves()) add_arc(arc, 0);
-  for (const ExactVec& p : lvm.points()) points.push_back({p, kLvm});
-}
-
-// A direction on none of the given great circles and none of the points: the reference at
-// which coverage is counted directly. Small integer directions are tried in turn; finitely
-// many circles cannot contain them all.
-ExactVec generic_direction(const std::vector<ExactVec>& circles,
-                           const std::vector<ExactVec>& points) {
-  for (int k = 1;; ++k) {
-    ExactVec r = ExactVec::from_point({double(2 * k + 1), double(-3 * k - 5), double(7 * k + 2)});
-    bool ok = true;
-    for (const ExactVec& n : circles) {
-      if (exact::sign_dot(r, n) == Sign::kZero) {
-        ok = false;
-        break;
-      }
-    }
-    for (size_t i = 0; ok && i < points.size(); ++i) ok = !exact::parallel(r, points[i]);
-    if (ok) return r;
-  }
-}
 
 // A back-facing face projects to the convex polygon to the left of its edges (its
 // vertices run counter-clockwise around the outward normal, seen from outside).
@@ -119,7 +82,7 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
     faces.push_back(std::move(v));
   }
-  const ExactVec r = generic_direction(circles, points);
+  const ExactVec r = sphere::generic_direction(circles, points);
   OccludingCells cells;
   cells.count = faces.size();
   cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[i][0]).unit; };
@@ -153,7 +116,7 @@ Occlusion convex_decomposition_occlusion(const SolidMesh& mesh, std::span<const 
       for (const sphere::Arc& a : f.loops[0].arcs) circles.push_back(a.normal);
     }
   }
-  const ExactVec r = generic_direction(circles, points);
+  const ExactVec r = sphere::generic_direction(circles, points);
   OccludingCells cells;
   cells.count = maps.size();
   cells.direction = [&](uint32_t i) {
@@ -237,7 +200,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
-  add_lvm(lvm, arcs, points);
+  sphere::add_image(lvm, kLvm, arcs, points);
 
   // The reference direction lies on no circle of the LVM or of any cell, and on no point.
   std::vector<ExactVec> circles, point_dirs;
@@ -263,10 +226,9 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   spdlog::debug("global occlusion: arrangement of {} arcs: {} vertices, {} edges, {:.2f} s", arcs.size(),
                 arr.vertices().size(), arr.edges().size(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  const auto& faces = arr.faces();
   const auto& half = arr.half_edges();
-  auto in_lvm_face = [&](uint32_t f) { return faces[f].coverage[kLvm] > 0; };
-  auto occluded_face = [&](uint32_t f) { return faces[f].coverage[kOcclusion] > 0; };
+  auto in_lvm_face = [&](uint32_t f) { return arr.coverage(f, kLvm) > 0; };
+  auto occluded_face = [&](uint32_t f) { return arr.coverage(f, kOcclusion) > 0; };
   auto face_in = [&](uint32_t f) { return in_lvm_face(f) && !occluded_face(f); };
   // A cell is in Int(GOM) iff every face around it is covered -- but the points and arcs
   // of the LVM in there may still be visible (rays along them that only graze O): the
@@ -278,7 +240,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
     const auto& edge = arr.edges()[e];
     const uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
-    const bool on_lvm_arc = (edge.arc_layers & (1u << kLvm)) != 0;
+    const bool on_lvm_arc = arr.edge_on_layer(e, kLvm);
     if (!on_lvm_arc && !in_lvm_face(left) && !in_lvm_face(right)) continue;
     if (!occluded_face(left) || !occluded_face(right)) {
       edge_visible[e] = 1;
@@ -296,10 +258,10 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   }
   auto vertex_in = [&](uint32_t v) {
     const auto& vert = arr.vertices()[v];
-    bool in_lvm = (vert.point_layers & (1u << kLvm)) != 0;
+    bool in_lvm = arr.vertex_has_point(v, kLvm);
     bool all_occluded = true;
     for (uint32_t h : vert.out) {
-      in_lvm |= (arr.edges()[half[h].edge].arc_layers & (1u << kLvm)) != 0;
+      in_lvm |= arr.edge_on_layer(half[h].edge, kLvm);
       in_lvm |= in_lvm_face(half[h].face);
       all_occluded &= occluded_face(half[h].face);
     }
