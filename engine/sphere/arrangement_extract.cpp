@@ -1,7 +1,8 @@
 // Arrangement::extract: the cells a caller selects, as a canonical SphericalImage.
+#include "sphere/arrangement.h"
+
 #include <algorithm>
 
-#include "sphere/arrangement.h"
 #include "sphere/union_find.h"
 
 namespace gvm::sphere {

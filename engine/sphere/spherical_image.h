@@ -15,8 +15,10 @@
 //    a loop of one `full` arc is a whole great circle (the face is then on the side its
 //    normal points to, e.g. a hemisphere). `convex` is set when the region is the
 //    intersection of the closed hemispheres {u . normal >= 0} of its arcs (every outcome
-//    of local_visibility_map); contains() and operator== rely on that flag, a later
-//    overlay module producing non-convex faces has to extend them (see below).
+//    of local_visibility_map, and of the set operations' results that are convex);
+//    contains() uses it for a fast test (general faces go through point_in_face), and
+//    operator== compares convex faces by their circles, general ones structurally (see
+//    below; is_subset both ways, in set_operations.h, is equality for any representation).
 //  - Curves (1-cells): arcs (or full great circles); a polyline is several arcs.
 //  - Points (0-cells).
 // `full_sphere` stands for the whole sphere (nothing else is set).
@@ -73,7 +75,7 @@ class SphericalImage {
 
   // -1 for the empty set, else the largest dimension of the cells.
   int dimension() const;
-  // Exact membership in the closed set (u non-zero). Faces must be convex (see above).
+  // Exact membership in the closed set (u non-zero), convex or general faces.
   bool contains(const exact::ExactVec& u) const;
   // Area in steradians (Gauss-Bonnet over the loops, in doubles; 4 pi, 2 pi exactly for
   // the full sphere and a hemisphere; 0 without 2-cells).
