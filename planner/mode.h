@@ -47,6 +47,10 @@ class Mode {
   // Where a setup may be for a target whose tool directions are `directions`.
   virtual DirectionSet reach_of(const DirectionSet& directions) const { return directions; }
   virtual CandidateSet candidates(std::span<const Target> targets) const = 0;
+  // Whether a setup at `direction` serves the target (what the candidates were built on).
+  virtual bool serves(const Target& target, const Direction& direction) const {
+    return target.reach.contains(direction);
+  }
   // Places a chosen candidate that serves every assigned target.
   virtual PlacedSetup place(const Candidate& chosen, std::span<const Target> targets,
                             std::span<const uint32_t> assigned) const = 0;

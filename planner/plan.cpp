@@ -11,6 +11,7 @@
 #include <chrono>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 #include "plan_state.h"
 
@@ -167,13 +168,64 @@ class Planner {
 
   void place_setups() {
     const auto t0 = Clock::now();
-    const auto chosen = assignment();
-    state_.setups.resize(chosen.size());
-    tbb::parallel_for(size_t{0}, chosen.size(), [&](size_t k) {
-      const auto& [candidate, assigned] = chosen[k];
-      state_.setups[k] = mode_->place(state_.candidates.candidates[candidate], state_.targets, assigned);
-    });
+    std::vector<std::pair<Candidate, std::vector<uint32_t>>> setups;
+    for (auto& [candidate, assigned] : assignment()) {
+      setups.push_back({state_.candidates.candidates[candidate], std::move(assigned)});
+    }
+    place(setups, std::vector<char>(setups.size(), 1));
+    // Once the directions are known, a target served by several setups goes to the one
+    // where it has the most room (a side face machined from the side rather than grazed
+    // from the top); setups that changed are placed again from where they are.
+    std::vector<char> changed(setups.size(), 0);
+    for (auto& [moved, from, to] : moves(setups)) {
+      auto& source = setups[from].second;
+      source.erase(std::find(source.begin(), source.end(), moved));
+      setups[to].second.insert(std::upper_bound(setups[to].second.begin(), setups[to].second.end(), moved), moved);
+      changed[from] = changed[to] = 1;
+    }
+    for (size_t k = 0; k < setups.size(); ++k) {
+      if (changed[k]) setups[k].first.direction = state_.setups[k].direction;
+    }
+    place(setups, changed);
+    std::vector<PlacedSetup> kept;
+    for (PlacedSetup& s : state_.setups) {
+      if (!s.reach.empty()) kept.push_back(std::move(s));
+    }
+    state_.setups = std::move(kept);
     state_.times.placement = seconds_since(t0);
+  }
+
+  // Places the setups marked (in parallel; each one's result depends on it alone).
+  void place(const std::vector<std::pair<Candidate, std::vector<uint32_t>>>& setups, const std::vector<char>& which) {
+    state_.setups.resize(setups.size());
+    tbb::parallel_for(size_t{0}, setups.size(), [&](size_t k) {
+      if (!which[k]) return;
+      if (setups[k].second.empty()) {
+        state_.setups[k] = PlacedSetup{};
+        return;
+      }
+      state_.setups[k] = mode_->place(setups[k].first, state_.targets, setups[k].second);
+    });
+  }
+
+  // (target, from, to): targets with more clearance in another placed setup that serves
+  // them (decided by doubles; whether it serves them, exactly).
+  std::vector<std::tuple<uint32_t, size_t, size_t>> moves(
+      const std::vector<std::pair<Candidate, std::vector<uint32_t>>>& setups) const {
+    std::vector<std::tuple<uint32_t, size_t, size_t>> out;
+    for (size_t from = 0; from < setups.size(); ++from) {
+      for (uint32_t t : setups[from].second) {
+        const Target& target = state_.targets[t];
+        size_t best = from;
+        double room = target.reach.approx_signed_clearance(state_.setups[from].direction.unit());
+        for (size_t k = 0; k < setups.size(); ++k) {
+          const double r = target.reach.approx_signed_clearance(state_.setups[k].direction.unit());
+          if (k != from && r > room && mode_->serves(target, state_.setups[k].direction)) best = k, room = r;
+        }
+        if (best != from) out.emplace_back(t, from, best);
+      }
+    }
+    return out;
   }
 
   // Reasons for the unreachable surfaces, and targets no candidate serves (cone,

@@ -2,54 +2,29 @@
 #include <google/protobuf/util/json_util.h>
 #include <google/protobuf/util/message_differencer.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <memory>
-#include <sstream>
 #include <string>
 
 #include "gvm/v1/gvm.pb.h"
+#include "support/cli.h"
 #include "support/scratch_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int status = -1;
-  std::string out;  // stdout and stderr
-};
+using gvm::test::CliRun;
+using gvm::test::read_file;
+using gvm::test::shared;
 
-CliRun run(const std::string& args) {
-  std::string cmd = std::string(GVM_CLI_PATH) + " " + args + " 2>&1";
-  CliRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.out.append(buf.data(), n);
-  int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
-
-std::string shared(const std::string& rel) { return std::string(GVM_SHARED_DIR) + "/" + rel; }
+CliRun run(const std::string& args) { return gvm::test::run_cli(args); }
 
 gvm::v1::Analysis parse(const std::string& json) {
   gvm::v1::Analysis a;
   auto status = google::protobuf::util::JsonStringToMessage(json, &a);
   EXPECT_TRUE(status.ok()) << status.ToString();
   return a;
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 TEST(Cli, HelpIsCompleteAndSucceeds) {

@@ -41,10 +41,7 @@ SurfaceVisibility visibility(const Part& part, std::span<const uint32_t> s) {
 
 // The rotation the test parts apply, for expected directions.
 ExactVec rotated(const test::TestPartOptions& o, double x, double y, double z) {
-  Point3 p{x, y, z};
-  if (o.rotation >= 1) p = {3 * p.x + 4 * p.y, -4 * p.x + 3 * p.y, 5 * p.z};
-  if (o.rotation >= 2) p = {5 * p.x, 3 * p.y + 4 * p.z, -4 * p.y + 3 * p.z};
-  return ExactVec::from_point(p);
+  return ExactVec::from_point(test::rotated(o, {x, y, z}));
 }
 
 class Variants : public ::testing::TestWithParam<test::TestPartOptions> {};

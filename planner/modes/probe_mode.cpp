@@ -132,10 +132,11 @@ class ProbeMode final : public Mode {
     return u;
   }
 
- private:
-  bool serves(const Target& t, const Direction& d) const {
+  bool serves(const Target& t, const Direction& d) const override {
     return t.reach.dimension() == 2 ? t.reach.contains_cap(d, sin2_) : t.reach.contains(d);
   }
+
+ private:
 
   std::vector<Orientation> grid_;
   double cone_, sin2_;

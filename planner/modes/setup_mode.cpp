@@ -75,12 +75,13 @@ class SetupMode final : public Mode {
     return u;
   }
 
+  bool serves(const Target& t, const Direction& d) const override {
+    return t.reach.dimension() == 2 ? t.reach.contains_cap(d, sin2_) : t.reach.contains(d);
+  }
+
  private:
   static constexpr size_t kGrid = 2000;
 
-  bool serves(const Target& t, const Direction& d) const {
-    return t.reach.dimension() == 2 ? t.reach.contains_cap(d, sin2_) : t.reach.contains(d);
-  }
 
   bool keeps_clearance(const PlacedSetup& p, std::span<const Target> targets) const {
     for (const TargetReach& r : p.reach) {

@@ -324,6 +324,32 @@ RawMesh pocket_with_void_part(const TestPartOptions& o) {
   return build(m, o);
 }
 
+RawMesh machined_block_part(const TestPartOptions& o) {
+  GridModel m;
+  m.name = "machined_block";
+  m.g[0] = {0, 2, 6, 10, 14, 16};
+  m.g[1] = {0, 4, 5, 7, 8, 12};
+  m.g[2] = {0, 2, 4, 6, 7, 10};
+  m.filled = [](int i, int j, int k) {
+    const bool hole = j >= 1 && j <= 3 && k == 1;        // y 4..8, z 2..4, all along x
+    const bool pocket = i == 1 && j == 2 && k >= 3;      // x 2..6, y 5..7, z 6..10
+    const bool slot = i == 3 && k == 4;                  // x 10..14, z 7..10, all along y
+    return !(hole || pocket || slot);
+  };
+  m.rename = {{"y+4", "hole_y0"},     {"y-8", "hole_y1"},       {"z+2", "hole_floor"},
+              {"z-4", "hole_ceiling"}, {"z+6", "pocket_floor"},  {"x+2", "pocket_x0"},
+              {"x-6", "pocket_x1"},   {"y+5", "pocket_y0"},     {"y-7", "pocket_y1"},
+              {"z+7", "slot_floor"},  {"x+10", "slot_x0"},      {"x-14", "slot_x1"},
+              {"z-0", "bottom"}};
+  return build(m, o);
+}
+
+Point3 rotated(const TestPartOptions& o, const Point3& p) {
+  const I3 q = rotate({static_cast<int64_t>(p.x), static_cast<int64_t>(p.y), static_cast<int64_t>(p.z)},
+                      o.rotation);
+  return {double(q[0]), double(q[1]), double(q[2])};
+}
+
 std::vector<NamedTestPart> all_test_parts() {
   return {{"box", box_part},
           {"slot", slot_part},
@@ -335,7 +361,8 @@ std::vector<NamedTestPart> all_test_parts() {
           {"tslot_closed", tslot_closed_part},
           {"tslot_open", tslot_open_part},
           {"two_pockets", two_pockets_part},
-          {"pocket_with_void", pocket_with_void_part}};
+          {"pocket_with_void", pocket_with_void_part},
+          {"machined_block", machined_block_part}};
 }
 
 std::vector<uint32_t> faces_of(const RawMesh& raw, std::initializer_list<std::string> names) {

@@ -40,6 +40,12 @@ RawMesh tslot_closed_part(const TestPartOptions& o = {});   // T-slot closed at 
 RawMesh tslot_open_part(const TestPartOptions& o = {});     // T-slot open at both ends
 RawMesh two_pockets_part(const TestPartOptions& o = {});    // plate with two pockets
 RawMesh pocket_with_void_part(const TestPartOptions& o = {}); // pocket + internal cubic void
+// A 16 x 12 x 10 block with a through hole along x (hole_*), a pocket from +z
+// (pocket_*) and a slot along y (slot_*): the planner's hand-derived case.
+RawMesh machined_block_part(const TestPartOptions& o = {});
+
+// Where the part's rotation (TestPartOptions::rotation) takes a point or direction, exactly.
+Point3 rotated(const TestPartOptions& o, const Point3& p);
 
 struct NamedTestPart {
   std::string name;
