@@ -46,6 +46,9 @@ class Mode {
   virtual ~Mode() = default;
   // Where a setup may be for a target whose tool directions are `directions`.
   virtual DirectionSet reach_of(const DirectionSet& directions) const { return directions; }
+  // Whether the candidates are the exact witnesses of the reach sets' overlay, so that the
+  // planner may find them round by round (exact_cover.h) instead of all at once.
+  virtual bool exact() const { return false; }
   virtual CandidateSet candidates(std::span<const Target> targets) const = 0;
   // Whether a setup at `direction` serves the target (what the candidates were built on).
   virtual bool serves(const Target& target, const Direction& direction) const {

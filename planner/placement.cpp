@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace gvm::planner {
 namespace {
@@ -25,7 +26,7 @@ Vec normalized(const Vec& v) {
 // best improvement, halves h when there is none. `project` maps trial points onto the
 // set the search is confined to.
 template <class F, class P>
-Vec climb(const F& f, const P& project, Vec u, int budget) {
+Vec climb(F& f, const P& project, Vec u, int budget) {
   double fu = f(u), h = 0.25, turn = 0;
   for (int evals = 1; h > 1e-10 && evals < budget;) {
     const Vec a = std::fabs(u[0]) < 0.6 ? Vec{1, 0, 0} : Vec{0, 1, 0};
@@ -49,6 +50,39 @@ Vec climb(const F& f, const P& project, Vec u, int budget) {
   }
   return u;
 }
+
+// The smallest signed clearance of many sets at a point, evaluated lazily: clearance is
+// 1-Lipschitz in the angle, so a set whose last value, less the angle moved since, cannot
+// undercut the minimum found so far is not evaluated again (most sets are far from the
+// search, which moves in small steps).
+class SmallestClearance {
+ public:
+  explicit SmallestClearance(std::span<const DirectionSet* const> sets)
+      : sets_(sets.begin(), sets.end()), last_(sets.size(), -1e300), at_(sets.size(), Vec{0, 0, 0}),
+        order_(sets.size()) {
+    std::iota(order_.begin(), order_.end(), 0u);
+  }
+
+  double operator()(const Vec& u) {
+    // The sets that were tightest last time first, so that the bound bites early.
+    std::sort(order_.begin(), order_.end(), [&](uint32_t a, uint32_t b) { return last_[a] < last_[b]; });
+    double smallest = std::numeric_limits<double>::infinity();
+    for (uint32_t k : order_) {
+      const double moved = std::acos(std::clamp(dot(at_[k], u), -1.0, 1.0));
+      if (last_[k] > -1e299 && last_[k] - moved >= smallest) continue;
+      last_[k] = sets_[k]->approx_signed_clearance(u);
+      at_[k] = u;
+      smallest = std::min(smallest, last_[k]);
+    }
+    return smallest;
+  }
+
+ private:
+  std::vector<const DirectionSet*> sets_;
+  std::vector<double> last_;
+  std::vector<Vec> at_;
+  std::vector<uint32_t> order_;
+};
 
 }  // namespace
 
@@ -83,29 +117,43 @@ double certified_clearance_degrees(const DirectionSet& set, const Direction& d, 
   return double(lo) / 1e6;
 }
 
+namespace {
+
+// Where the search goes when some member is an arc or a point: on the directions every
+// such member shares (their points tried one by one, their arcs searched along), exactly.
+Direction on_thin_members(std::span<const DirectionSet* const> thin, SmallestClearance& f, const Direction& start) {
+  DirectionSet on = *thin.front();
+  for (size_t i = 1; i < thin.size(); ++i) on = on.intersection(*thin[i]);
+  if (on.dimension() > 0) {
+    auto project = [&](const Vec& v) { return on.snap(v).unit(); };
+    return on.snap(climb(f, project, start.unit(), 200));
+  }
+  Direction best = start;
+  double most = -std::numeric_limits<double>::infinity();
+  for (const DirectionSet& point : on.cells()) {
+    const Direction p = point.witness();
+    const double c = f(p.unit());
+    if (c > most) most = c, best = p;
+  }
+  return best;
+}
+
+}  // namespace
+
 Placement place_in(std::span<const DirectionSet* const> members, const Direction& start) {
   std::vector<const DirectionSet*> wide, thin;  // with 2-cells; arcs and points only
   for (const DirectionSet* s : members) (s->dimension() == 2 ? wide : thin).push_back(s);
-  auto f = [&](const Vec& u) { return approx_clearance(wide, u); };
-
-  Direction d = start;
+  SmallestClearance f(wide);
+  Direction moved = start;
   if (thin.empty()) {
     const Vec u = climb(f, [](const Vec& v) { return v; }, start.unit(), 600);
-    const Direction moved(u[0], u[1], u[2]);
-    if (std::all_of(wide.begin(), wide.end(), [&](const DirectionSet* s) { return s->contains(moved); })) {
-      d = moved;
-    }
+    moved = Direction(u[0], u[1], u[2]);
   } else {
-    // On the arcs and points every thin member shares: exact directions of that set.
-    DirectionSet on = *thin.front();
-    for (size_t i = 1; i < thin.size(); ++i) on = on.intersection(*thin[i]);
-    auto project = [&](const Vec& v) { return on.snap(v).unit(); };
-    const Direction moved = on.snap(climb(f, project, start.unit(), 200));
-    if (std::all_of(wide.begin(), wide.end(), [&](const DirectionSet* s) { return s->contains(moved); })) {
-      d = moved;
-    }
+    moved = on_thin_members(thin, f, start);
   }
-  return placement_at(members, d);
+  // The search decides in doubles; the direction is kept only if every member holds it.
+  const bool kept = std::all_of(wide.begin(), wide.end(), [&](const DirectionSet* s) { return s->contains(moved); });
+  return placement_at(members, kept ? moved : start);
 }
 
 Placement placement_at(std::span<const DirectionSet* const> members, const Direction& d) {

@@ -47,6 +47,8 @@ class RotaryMode final : public Mode {
     return rotary_axes(directions);
   }
 
+  bool exact() const override { return true; }
+
   CandidateSet candidates(std::span<const Target> targets) const override {
     CandidateSet out = exact_candidates(targets);
     out.description = "every rotary axis (the exact arrangement of the good-axis boundaries, " +

@@ -21,6 +21,8 @@ class SetupMode final : public Mode {
   explicit SetupMode(double min_clearance_degrees)
       : theta_(min_clearance_degrees), sin2_(sin2_at_least(min_clearance_degrees)) {}
 
+  bool exact() const override { return theta_ == 0; }
+
   CandidateSet candidates(std::span<const Target> targets) const override {
     CandidateSet exact = exact_candidates(targets);
     if (theta_ == 0) return exact;

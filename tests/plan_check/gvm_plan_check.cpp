@@ -15,6 +15,7 @@
 // consistent (lower bound <= setups, optimal iff equal).
 // Exit status: 0 all checks pass, 1 some fail, 2 usage or load errors.
 #include <google/protobuf/util/message_differencer.h>
+#include <spdlog/spdlog.h>
 
 #include <chrono>
 #include <cmath>
@@ -205,6 +206,7 @@ int check_part(const std::string& path, const Options& opt, Failures& fail) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  spdlog::set_level(spdlog::level::warn);  // the analyses' progress lines would drown the report
   Options opt;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
