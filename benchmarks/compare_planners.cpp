@@ -11,6 +11,7 @@
 // planning time against the analysis time. Prints a Markdown table; --json writes the
 // rows (protobuf's mapping of gvm.v1.PlannerBenchmark).
 #include <google/protobuf/util/json_util.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
@@ -128,6 +129,7 @@ void print_table(const gvm::v1::PlannerBenchmark& b) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  spdlog::set_level(spdlog::level::warn);  // the analyses' progress lines are not the table
   Options opt;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
