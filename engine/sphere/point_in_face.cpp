@@ -9,12 +9,13 @@ namespace {
 using exact::ExactVec;
 
 // The sign of a polynomial in two infinitesimals, delta << epsilon << 1, given by its
-// terms in decreasing order of magnitude: the first non-zero term decides.
-Sign lexicographic(std::initializer_list<Sign> terms) {
-  for (Sign s : terms) {
-    if (s != Sign::kZero) return s;
-  }
-  return Sign::kZero;
+// terms in decreasing order of magnitude: the first non-zero term decides. The terms are
+// evaluated only as far as needed (most are exact predicates that decide at the first).
+template <class... Terms>
+Sign lexicographic(const Terms&... terms) {
+  Sign s = Sign::kZero;
+  ((s == Sign::kZero ? (s = terms(), 0) : 0), ...);
+  return s;
 }
 
 struct Piece {
@@ -46,22 +47,28 @@ bool point_in_face(const Face& f, const ExactVec& u) {
     }
   }
   const std::vector<Piece> pieces = boundary_pieces(f);
+  std::vector<ExactVec> normals;  // circle normal of each piece, built once
+  for (const Piece& p : pieces) normals.push_back(cross(p.a, p.b));
   const ExactVec r = ExactVec::from_point({0.6180339887498949, 0.7071067811865476, 1.0});
-  for (const Piece& ref : pieces) {
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const Piece& ref = pieces[k];
     const ExactVec m = ref.a + ref.b;  // strictly inside the minor arc
     if (exact::parallel(u, m)) continue;  // u = -m: take another reference
-    const ExactVec n = cross(ref.a, ref.b);
+    const ExactVec& n = normals[k];
     int crossings = 0;
     bool degenerate = false;
-    for (const Piece& p : pieces) {
-      const ExactVec q = cross(p.a, p.b);
-      // Sides of the path's endpoints with respect to the piece's circle.
-      Sign su = lexicographic({exact::sign_dot(u, q), exact::sign_dot(r, q)});
-      Sign sm = lexicographic({exact::sign_dot(m, q), exact::sign_dot(n, q)});
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      const Piece& p = pieces[i];
+      const ExactVec& q = normals[i];
+      // Sides of the path's endpoints with respect to the piece's circle. On the
+      // reference piece itself m . n = 0 by construction and n . n > 0.
+      Sign su = lexicographic([&] { return exact::sign_dot(u, q); }, [&] { return exact::sign_dot(r, q); });
+      Sign sm = i == k ? Sign::kPositive
+                       : lexicographic([&] { return exact::sign_dot(m, q); }, [&] { return exact::sign_dot(n, q); });
       // Sides of the piece's endpoints with respect to the path's circle (u+dR) x (m+eN).
       auto side = [&](const ExactVec& x) {
-        return lexicographic({exact::sign_det(u, m, x), exact::sign_det(u, n, x),
-                              exact::sign_det(r, m, x), exact::sign_det(r, n, x)});
+        return lexicographic([&] { return exact::sign_det(u, m, x); }, [&] { return exact::sign_det(u, n, x); },
+                             [&] { return exact::sign_det(r, m, x); }, [&] { return exact::sign_det(r, n, x); });
       };
       Sign sa = side(p.a), sb = side(p.b);
       if (su == Sign::kZero || sm == Sign::kZero || sa == Sign::kZero || sb == Sign::kZero) {
