@@ -8,7 +8,7 @@
 namespace gvm::planner {
 namespace {
 
-constexpr size_t kSeedSurfaces = 16;  // smallest 2-dimensional reach sets in the first K
+constexpr size_t kSeed = 32;  // targets in the first K: arcs and points, then the smallest 2-cells
 
 // Arcs, points and the smallest 2-cells first: the targets most likely to decide.
 std::vector<uint32_t> seed(std::span<const Target> targets) {
@@ -19,8 +19,8 @@ std::vector<uint32_t> seed(std::span<const Target> targets) {
   std::vector<double> area(targets.size(), 0);
   for (uint32_t t : wide) area[t] = targets[t].reach.area();
   std::stable_sort(wide.begin(), wide.end(), [&](uint32_t a, uint32_t b) { return area[a] < area[b]; });
-  wide.resize(std::min(wide.size(), kSeedSurfaces));
   thin.insert(thin.end(), wide.begin(), wide.end());
+  thin.resize(std::min(thin.size(), kSeed));
   std::sort(thin.begin(), thin.end());
   return thin;
 }

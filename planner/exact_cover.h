@@ -7,8 +7,8 @@
 // its witnesses, at which every other target is tested exactly. When a cover of every
 // target by those witnesses meets K's bound it is optimal; otherwise the targets the best
 // cover of K leaves unserved join K and the round repeats (at worst K is every target:
-// the full overlay). K starts with the targets whose reach sets are arcs or points and the
-// smallest 2-dimensional ones.
+// the full overlay). K starts with a few targets whose reach sets are arcs or points, or
+// else the smallest 2-dimensional ones.
 #pragma once
 
 #include <cstdint>

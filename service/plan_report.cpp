@@ -62,11 +62,18 @@ class Names {
   std::map<uint32_t, std::string> name_;
 };
 
-// "F1 F2 F5" with pieces as "F7[faces 3,4]" and flags for exact alignment.
-std::string reach_list(const v1::Setup& s, const Names& name) {
+// "F1 F2 F5" with pieces as "F7[faces 3,4]" and flags for exact alignment, wrapped
+// after `width` characters onto lines indented by `indent`.
+std::string reach_list(const v1::Setup& s, const Names& name, size_t width, size_t indent) {
   std::string out;
+  size_t line = 0;
   for (const v1::SetupFeature& r : s.reach()) {
-    if (!out.empty()) out += " ";
+    if (out.size() - line > width) {
+      out += "\n" + std::string(indent, ' ');
+      line = out.size();
+    } else if (!out.empty()) {
+      out += " ";
+    }
     out += name(r.feature());
     if (r.faces_size() > 0) {
       out += "[faces";
@@ -90,7 +97,7 @@ void print_setups(const v1::Plan& p, const Names& name, std::ostream& out) {
     out << format("%3.0f", k + 1.0) << "  " << vec(s.direction()) << "  " << format("%7.2f", s.clearance_degrees())
         << " deg  ";
     if (probe) out << format("%6.1f", s.head_a_degrees()) << ", " << format("%6.1f", s.head_b_degrees()) << "  ";
-    out << reach_list(s, name) << "\n";
+    out << reach_list(s, name, 60, probe ? 63 : 47) << "\n";
     if (rotary) {
       out << "       table angle 0 = tool along " << vec(s.rotary_zero()) << "; angles:";
       for (const v1::SetupFeature& r : s.reach()) {

@@ -68,7 +68,8 @@ class RotaryMode final : public Mode {
       if (!r.rotary_angles.empty()) {
         std::vector<std::array<double, 2>> radians;
         for (auto [from, to] : r.rotary_angles) radians.push_back({from * kDegree, to * kDegree});
-        r.rotary_angle_degrees = most_open_angle(t.directions, radians, *p.rotary_zero, p.direction) / kDegree;
+        const double chosen = most_open_angle(t.directions, radians, *p.rotary_zero, p.direction) / kDegree;
+        r.rotary_angle_degrees = std::fmod(chosen, 360.0);  // the intervals may run past 360
       }
     }
     return p;
