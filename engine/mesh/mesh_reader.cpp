@@ -160,6 +160,12 @@ Status read_off(std::string_view s, RawMesh& m) {
   uint64_t nv = 0, nf = 0;
   if (tok.size() < 2 || !parse_int(tok[0], nv) || !parse_int(tok[1], nf))
     return Bad(m.source, "bad OFF counts line");
+  // A vertex line holds at least "x y z" and a line break, a face line at least its count
+  // and a line break: counts the bytes cannot hold are refused before anything is reserved.
+  if (nv > s.size() / 6 + 1 || nf > s.size() / 2 + 1)
+    return Bad(m.source, "the OFF header declares " + std::to_string(nv) + " vertices and " +
+                             std::to_string(nf) + " faces, more than the " +
+                             std::to_string(s.size()) + " bytes of the file can hold");
   if (nf > kMaxFaces || nv > kMaxVertices)
     return ResourceExhausted(m.source + ": " + std::to_string(nf) + " faces / " +
                              std::to_string(nv) + " vertices exceeds the limit");
@@ -234,24 +240,19 @@ Status read_obj(std::string_view s, RawMesh& m) {
 
 // ---------------------------------------------------------------- STL
 Status read_stl(std::string_view s, RawMesh& m) {
-  auto facet_points = [&](size_t n) {
-    m.points.reserve(3 * n);
-    m.faces.reserve(n);
-  };
-  bool binary = false;
-  if (s.size() >= 84) {
-    uint32_t n;
-    std::memcpy(&n, s.data() + 80, 4);  // little endian by format (host is little endian)
-    if (84 + 50 * uint64_t(n) == s.size()) binary = true;
-  }
   size_t first = 0;
   while (first < s.size() && is_space(s[first])) ++first;
-  bool ascii = !binary && s.substr(first, 5) == "solid";
+  const bool starts_solid = s.substr(first, 5) == "solid";
+  uint32_t n = 0;
+  bool binary = false;
+  if (s.size() >= 84) {
+    std::memcpy(&n, s.data() + 80, 4);  // little endian by format (host is little endian)
+    binary = 84 + 50 * uint64_t(n) == s.size();
+  }
   if (binary) {
-    uint32_t n;
-    std::memcpy(&n, s.data() + 80, 4);
     if (n > kMaxFaces) return ResourceExhausted(m.source + ": more than 50 million facets");
-    facet_points(n);
+    m.points.reserve(3 * size_t(n));  // n matches the size of the file
+    m.faces.reserve(n);
     for (uint32_t i = 0; i < n; ++i) {
       const char* r = s.data() + 84 + 50 * size_t(i) + 12;
       std::vector<uint32_t> f(3);
@@ -265,9 +266,14 @@ Status read_stl(std::string_view s, RawMesh& m) {
     }
     return Status::Ok();
   }
-  if (!ascii)
-    return Bad(m.source, "neither ASCII STL (no 'solid') nor binary STL (size " +
-                             std::to_string(s.size()) + " does not match the facet count)");
+  if (!starts_solid) {
+    if (s.size() < 84)
+      return Bad(m.source, "neither ASCII STL (no 'solid') nor binary STL (" +
+                               std::to_string(s.size()) + " bytes, shorter than the 84-byte header)");
+    return Bad(m.source, "neither ASCII STL (no 'solid') nor binary STL (the header declares " +
+                             std::to_string(n) + " facets, " + std::to_string(84 + 50 * uint64_t(n)) +
+                             " bytes, but the file has " + std::to_string(s.size()) + " bytes)");
+  }
   Cursor c(s);
   std::string_view l;
   std::vector<uint32_t> f;
@@ -283,14 +289,17 @@ Status read_stl(std::string_view s, RawMesh& m) {
       if (!in_facet || tok.size() < 4 || !parse_double(tok[1], p.x) ||
           !parse_double(tok[2], p.y) || !parse_double(tok[3], p.z))
         return Bad(m.source, "bad vertex on line " + std::to_string(c.line_no()));
+      if (m.points.size() >= kMaxVertices) return ResourceExhausted(m.source + ": too many vertices");
       f.push_back(uint32_t(m.points.size()));
       m.points.push_back(p);
     } else if (tok[0] == "endfacet") {
+      if (!in_facet) return Bad(m.source, "'endfacet' without 'facet' on line " + std::to_string(c.line_no()));
       if (m.faces.size() >= kMaxFaces) return ResourceExhausted(m.source + ": more than 50 million facets");
       m.faces.push_back(f);
       in_facet = false;
     }
   }
+  if (in_facet) return Bad(m.source, "ASCII STL ends inside facet " + std::to_string(m.faces.size()));
   return Status::Ok();
 }
 
@@ -390,6 +399,7 @@ Status read_ply(std::string_view s, RawMesh& m) {
       PlyElement e;
       e.name = tok[1];
       if (!parse_int(tok[2], e.count)) return Bad(m.source, "bad PLY element count");
+      if (elements.size() >= 1000) return Bad(m.source, "more than 1000 PLY elements");
       elements.push_back(e);
     } else if (tok[0] == "property" && !elements.empty()) {
       PlyProp p;
@@ -418,8 +428,19 @@ Status read_ply(std::string_view s, RawMesh& m) {
   }
   if (format < 0 || body == std::string_view::npos) return Bad(m.source, "incomplete PLY header");
   PlyValues in(s.substr(body), format);
+  const uint64_t body_bytes = s.size() - body;
   for (const auto& e : elements) {
     bool is_v = e.name == "vertex", is_f = e.name == "face";
+    if (e.props.empty()) continue;  // holds no data, whatever its count
+    // Each element takes at least one byte per value (binary: the size of each scalar and
+    // list count; ASCII: a character and a separator): counts the bytes cannot hold are
+    // refused before the loop.
+    uint64_t min_bytes = 0;
+    for (const auto& p : e.props) min_bytes += format == 0 ? 2 : psize(p.list ? p.count_type : p.type);
+    if (e.count > (body_bytes + 1) / min_bytes)
+      return Bad(m.source, "the PLY header declares " + std::to_string(e.count) + " elements '" + e.name +
+                               "', more than the " + std::to_string(body_bytes) +
+                               " bytes after the header can hold");
     if (is_f && e.count > kMaxFaces) return ResourceExhausted(m.source + ": more than 50 million faces");
     if (is_v && e.count > kMaxVertices) return ResourceExhausted(m.source + ": too many vertices");
     int ix = -1, iy = -1, iz = -1, iface = -1;
@@ -446,7 +467,7 @@ Status read_ply(std::string_view s, RawMesh& m) {
           continue;
         }
         double cnt = 0;
-        if (!in.read(p.count_type, cnt) || cnt < 0 || cnt != std::floor(cnt))
+        if (!in.read(p.count_type, cnt) || !(cnt >= 0) || cnt != std::floor(cnt) || cnt > 4294967295.0)
           return Bad(m.source, "bad PLY list length in element " + e.name);
         for (uint64_t j = 0; j < uint64_t(cnt); ++j) {
           if (!in.read(p.type, v)) return Bad(m.source, "PLY data ends early in element " + e.name);
@@ -466,16 +487,46 @@ Status read_ply(std::string_view s, RawMesh& m) {
 
 }  // namespace
 
-StatusOr<RawMesh> read_raw_mesh(const std::string& path) {
+std::optional<MeshFormat> parse_mesh_format(std::string_view name) {
+  if (!name.empty() && name.front() == '.') name.remove_prefix(1);
+  if (name.size() != 3) return std::nullopt;
+  std::string ext = lower(std::string(name));
+  if (ext == "off") return MeshFormat::kOff;
+  if (ext == "obj") return MeshFormat::kObj;
+  if (ext == "stl") return MeshFormat::kStl;
+  if (ext == "ply") return MeshFormat::kPly;
+  return std::nullopt;
+}
+
+StatusOr<RawMesh> read_raw_mesh(std::string_view bytes, MeshFormat format, const std::string& source) {
   RawMesh m;
-  m.source = path;
+  m.source = source;
+  if (bytes.empty()) return InvalidArgument(source + ": empty file");
+  Status st;
+  switch (format) {
+    case MeshFormat::kOff: st = read_off(bytes, m); break;
+    case MeshFormat::kObj: st = read_obj(bytes, m); break;
+    case MeshFormat::kStl: st = read_stl(bytes, m); break;
+    case MeshFormat::kPly: st = read_ply(bytes, m); break;
+    default: return InvalidArgument(source + ": unknown mesh format");
+  }
+  if (!st.ok()) return st;
+  if (m.faces.empty()) return InvalidArgument(source + ": the file holds no faces");
+  if (m.faces.size() > kMaxFaces) return ResourceExhausted(source + ": more than 50 million faces");
+  if (st = check_indices(m); !st.ok()) return st;
+  if (st = weld(m); !st.ok()) return st;
+  return m;
+}
+
+StatusOr<RawMesh> read_raw_mesh(const std::string& path) {
   size_t dot = path.find_last_of('.');
   size_t slash = path.find_last_of('/');
   std::string ext = (dot == std::string::npos || (slash != std::string::npos && dot < slash))
                         ? std::string()
-                        : lower(path.substr(dot + 1));
-  if (ext != "off" && ext != "obj" && ext != "stl" && ext != "ply")
-    return InvalidArgument(path + ": unknown mesh file extension '" + ext +
+                        : path.substr(dot + 1);
+  const std::optional<MeshFormat> format = parse_mesh_format(ext);
+  if (!format)
+    return InvalidArgument(path + ": unknown mesh file extension '" + lower(ext) +
                            "' (expected .off, .obj, .stl or .ply)");
   std::ifstream in(path, std::ios::binary);
   if (!in) return NotFound(path + ": cannot open file");
@@ -486,18 +537,7 @@ StatusOr<RawMesh> read_raw_mesh(const std::string& path) {
   in.seekg(0, std::ios::beg);
   data.resize(size_t(size));
   if (size > 0 && !in.read(data.data(), size)) return InvalidArgument(path + ": cannot read file");
-  if (data.empty()) return InvalidArgument(path + ": empty file");
-  Status st;
-  if (ext == "off") st = read_off(data, m);
-  else if (ext == "obj") st = read_obj(data, m);
-  else if (ext == "stl") st = read_stl(data, m);
-  else st = read_ply(data, m);
-  if (!st.ok()) return st;
-  if (m.faces.empty()) return InvalidArgument(path + ": the file holds no faces");
-  if (m.faces.size() > kMaxFaces) return ResourceExhausted(path + ": more than 50 million faces");
-  if (st = check_indices(m); !st.ok()) return st;
-  if (st = weld(m); !st.ok()) return st;
-  return m;
+  return read_raw_mesh(data, *format, path);
 }
 
 StatusOr<SolidMesh> load_solid(const std::string& path) {

@@ -3,7 +3,9 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gvm/geometry.h"
@@ -40,8 +42,24 @@ struct SolidMesh {
   std::map<std::string, std::vector<uint32_t>> groups;  // from the file, input face ids
 };
 
-// Reads OFF, OBJ, STL (ASCII or binary) or PLY, chosen by file extension.
+enum class MeshFormat { kOff, kObj, kStl, kPly };
+
+// "off", "obj", "stl", "ply" (any case, optional leading dot); nothing otherwise.
+std::optional<MeshFormat> parse_mesh_format(std::string_view name);
+
+// Reads OFF, OBJ, STL (ASCII or binary) or PLY, chosen by file extension (through
+// parse_mesh_format; kInvalidArgument for any other extension, kNotFound when the file
+// cannot be opened), with the bytes reader below.
 StatusOr<RawMesh> read_raw_mesh(const std::string& path);
+
+// The same readers as read_raw_mesh(path), on bytes in memory; `source` names the part in
+// messages (and becomes RawMesh::source). Any bytes are safe to pass: malformed,
+// truncated or inconsistent input (declared counts the bytes cannot hold, a binary STL
+// whose size does not match its facet count, non-finite coordinates, indices out of
+// range) fails with kInvalidArgument naming the problem; only a well-formed part of more
+// than 50 million faces fails with kResourceExhausted. Memory stays proportional to the
+// size of the bytes.
+StatusOr<RawMesh> read_raw_mesh(std::string_view bytes, MeshFormat format, const std::string& source);
 
 // Checks the raw mesh and builds the solid. Fails with kInvalidArgument and a message
 // naming the file and the first offending face, edge or vertex (input numbering) when the
