@@ -6,6 +6,7 @@
 
 #include "analysis/analysis_impl.h"
 #include "exact/exact_vec.h"
+#include "exact/interrupt.h"
 #include "exact/predicates.h"
 #include "visibility/occlusion_probe.h"
 
@@ -123,8 +124,14 @@ StatusOr<Surface> Analysis::surface_of(std::span<const uint32_t> faces) const {
   if (!tris.ok()) return tris.status();
   if (tris->empty()) return InvalidArgument("no faces given");
   const auto t0 = std::chrono::steady_clock::now();
-  SurfaceVisibility vis = compute_surface_visibility(impl_->part, *tris, !impl_->options.lvm_only(),
-                                                     method_of(impl_->options));
+  std::optional<SurfaceVisibility> computed;
+  try {
+    computed.emplace(compute_surface_visibility(impl_->part, *tris, !impl_->options.lvm_only(),
+                                                method_of(impl_->options)));
+  } catch (const Interrupted&) {
+    return Status(StatusCode::kCancelled, "surface maps cancelled");
+  }
+  SurfaceVisibility& vis = *computed;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Surface out;
@@ -139,11 +146,17 @@ std::vector<uint32_t> Analysis::blocking_faces(std::span<const uint32_t> faces,
   const SolidMesh& mesh = impl_->part.mesh();
   auto tris = triangles_of(mesh, faces);
   if (!tris.ok() || tris->empty()) return {};
-  // Only faces of O_S can block a direction of LVM(S + N_S) (Def. 5).
-  const SurfaceVisibility vis = compute_surface_visibility(impl_->part, *tris, false);
-  if (vis.occluders.potential.empty()) return {};
-  const OcclusionProbe probe(mesh, *tris, vis.occluders.potential);
-  return input_faces(mesh, probe.blockers(u.exact()));
+  try {
+    // Only faces of O_S can block a direction of LVM(S + N_S) (Def. 5).
+    const SurfaceVisibility vis = compute_surface_visibility(impl_->part, *tris, false);
+    if (vis.occluders.potential.empty()) return {};
+    const OcclusionProbe probe(mesh, *tris, vis.occluders.potential);
+    std::vector<uint32_t> blockers = probe.blockers(u.exact());
+    interruption_point();
+    return input_faces(mesh, blockers);
+  } catch (const Interrupted&) {
+    return {};
+  }
 }
 
 std::vector<std::vector<uint32_t>> Analysis::planar_pieces(std::span<const uint32_t> faces) const {

@@ -4,14 +4,18 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <optional>
+#include <stop_token>
 
 #include "analysis/analysis_impl.h"
+#include "exact/interrupt.h"
 #include "gvm/mesh.h"
+#include "gvm/part.h"
 
 namespace gvm {
 namespace {
@@ -48,45 +52,54 @@ PartSummary summarize(const RawMesh& raw, const Part& part) {
   return out;
 }
 
-// Throttled progress: the callback sees every surface, the log one line per second.
+// Throttled progress: the callback sees every surface, the log one line per second. A
+// callback returning false cancels the analysis's task group (as a stop request does).
 class Progress {
  public:
-  Progress(size_t total, const std::function<bool(size_t, size_t)>& callback)
-      : total_(total), callback_(callback), start_(Clock::now()) {}
+  Progress(size_t total, const std::function<bool(size_t, size_t)>& callback,
+           tbb::task_group_context& ctx, spdlog::logger& log)
+      : total_(total), callback_(callback), ctx_(ctx), log_(log), start_(Clock::now()) {}
 
-  // Returns false when the caller asked to stop.
-  bool tick() {
+  void tick() {
     size_t done = ++done_;
-    if (callback_ && !callback_(done, total_)) cancelled_ = true;
+    if (callback_ && !callback_(done, total_)) ctx_.cancel_group_execution();
     auto now = Clock::now();
     auto last = last_log_.load();
     if (now - start_ > std::chrono::seconds(2) && now - last > std::chrono::seconds(1) &&
         last_log_.compare_exchange_strong(last, now)) {
-      spdlog::info("visibility maps: {}/{} surfaces, {:.1f} s", done, total_,
-                   seconds_since(start_));
+      log_.info("visibility maps: {}/{} surfaces, {:.1f} s", done, total_, seconds_since(start_));
     }
-    return !cancelled_;
   }
-  bool cancelled() const { return cancelled_; }
 
  private:
   size_t total_;
   const std::function<bool(size_t, size_t)>& callback_;
+  tbb::task_group_context& ctx_;
+  spdlog::logger& log_;
   Clock::time_point start_;
   std::atomic<size_t> done_{0};
   std::atomic<Clock::time_point> last_log_{};
-  std::atomic<bool> cancelled_{false};
 };
 
 StatusOr<Part> read_part(const AnalyzeRequest& request, RawMesh& raw, AnalysisTiming& timing) {
   auto t0 = Clock::now();
-  StatusOr<RawMesh> read = read_raw_mesh(request.part_path);
+  StatusOr<RawMesh> read =
+      request.part_bytes
+          ? read_raw_mesh(*request.part_bytes, request.part_format,
+                          request.part_name.empty() ? std::string("part") : request.part_name)
+          : read_raw_mesh(request.part_path);
   if (!read.ok()) return read.status();
   raw = std::move(*read);
   timing.read = seconds_since(t0);
+  if (request.max_faces > 0 && raw.faces.size() > request.max_faces) {
+    return ResourceExhausted(raw.source + ": " + std::to_string(raw.faces.size()) +
+                             " faces, more than the limit of " + std::to_string(request.max_faces));
+  }
+  interruption_point();
 
   t0 = Clock::now();
   StatusOr<SolidMesh> solid = build_solid(raw);
+  interruption_point();  // a cancelled validation may have stopped short
   if (!solid.ok()) return solid.status();
   timing.validate = seconds_since(t0);
 
@@ -95,14 +108,17 @@ StatusOr<Part> read_part(const AnalyzeRequest& request, RawMesh& raw, AnalysisTi
   if (request.options.feature_angle_degrees() > 0) {
     part_options.feature_angle_degrees = request.options.feature_angle_degrees();
   }
-  if (!request.groups_path.empty()) {
-    auto groups = read_face_groups(request.groups_path, solid->input_face_count);
+  if (!request.groups_json.empty() || !request.groups_path.empty()) {
+    auto groups = !request.groups_json.empty()
+                      ? parse_face_groups(request.groups_json, solid->input_face_count, "face groups")
+                      : read_face_groups(request.groups_path, solid->input_face_count);
     if (!groups.ok()) return groups.status();
     part_options.face_groups = std::move(*groups);
   } else {
     part_options.face_groups = solid->groups;
   }
   StatusOr<Part> part = Part::analyze(std::move(*solid), part_options);
+  interruption_point();
   timing.part = seconds_since(t0);
   return part;
 }
@@ -136,8 +152,10 @@ std::vector<Surface> surfaces_of(const Part& part, std::vector<std::span<const u
   return out;
 }
 
-// The whole analysis, inside the caller's task arena (so --threads bounds every phase).
-StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads) {
+// The whole analysis, inside the caller's task arena (so --threads bounds every phase) and
+// in a task of the cancellable group `ctx`; throws Interrupted once that is cancelled.
+StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
+                                    tbb::task_group_context& ctx, spdlog::logger& log) {
   const auto t_start = Clock::now();
   AnalysisTiming timing;
   RawMesh raw;
@@ -152,11 +170,11 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads) 
   const auto t0 = Clock::now();
   timing.threads = static_cast<uint32_t>(threads);
   const OcclusionMethod method = method_of(request.options);
-  Progress progress(surfaces.size(), request.progress);
+  Progress progress(surfaces.size(), request.progress, ctx, log);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, surfaces.size(), 1),
                     [&](const tbb::blocked_range<size_t>& range) {
                       for (size_t i = range.begin(); i != range.end(); ++i) {
-                        if (progress.cancelled()) return;
+                        interruption_point();
                         auto ts = Clock::now();
                         SurfaceVisibility vis = compute_surface_visibility(
                             impl->part, triangles[i], !request.options.lvm_only(), method);
@@ -165,7 +183,7 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads) 
                         progress.tick();
                       }
                     });
-  if (progress.cancelled()) return Status(StatusCode::kCancelled, "analysis cancelled");
+  interruption_point();  // surfaces left undone when cancelled
   timing.visibility = seconds_since(t0);
 
   const size_t region_count = impl->part.regions().size();
@@ -186,9 +204,27 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads) 
 StatusOr<Analysis> analyze(const AnalyzeRequest& request) {
   const int threads = request.options.threads() > 0 ? static_cast<int>(request.options.threads())
                                                     : tbb::this_task_arena::max_concurrency();
+  const std::shared_ptr<spdlog::logger> log =
+      request.logger ? request.logger : spdlog::default_logger();
   tbb::task_arena arena(threads);
+  // Everything runs as one task of `ctx` (so that interruption points in serial code see
+  // it too); a stop request cancels the group, which nested TBB loops inherit.
+  tbb::task_group_context ctx;
+  const std::stop_callback on_stop(request.stop, [&ctx] { ctx.cancel_group_execution(); });
+  const Status cancelled(StatusCode::kCancelled, "analysis cancelled");
   std::optional<StatusOr<Analysis>> out;
-  arena.execute([&] { out.emplace(analyze_in_arena(request, threads)); });
+  arena.execute([&] {
+    tbb::task_group group(ctx);
+    group.run_and_wait([&] {
+      try {
+        out.emplace(analyze_in_arena(request, threads, ctx, *log));
+      } catch (const Interrupted&) {
+        out.emplace(cancelled);
+      }
+    });
+  });
+  // Not started (stopped before), or a result that a late cancel may have cut short.
+  if (!out || ctx.is_group_execution_cancelled()) return cancelled;
   return std::move(*out);
 }
 

@@ -9,6 +9,7 @@
 
 #include "exact/approx.h"
 #include "exact/dyadic.h"
+#include "exact/interrupt.h"
 #include "exact/predicates.h"
 #include "gvm/mesh.h"
 #include "mesh/tri_intersect.h"
@@ -199,6 +200,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
     tbb::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
       return sorted[a] != sorted[b] ? sorted[a] < sorted[b] : a < b;
     });
+    interruption_point();  // a cancelled sort stops half done
     uint32_t best_a = UINT32_MAX, best_b = UINT32_MAX, group_first = 0;
     for (uint32_t k = 0; k < nf; ++k) {
       if (k == 0 || sorted[order[k]] != sorted[order[k - 1]]) {
@@ -233,6 +235,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
   tbb::parallel_sort(he.begin(), he.end(), [](const HalfEdge& a, const HalfEdge& b) {
     return a.key != b.key ? a.key < b.key : a.id < b.id;
   });
+  interruption_point();
   // Per half-edge: number of uses of its undirected edge and its twin.
   std::vector<uint32_t> uses(nc), twin(nc, UINT32_MAX);
   for (size_t i = 0; i < nc;) {
@@ -348,6 +351,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
     tbb::parallel_sort(th.begin(), th.end(), [](const HalfEdge& a, const HalfEdge& b) {
       return a.key != b.key ? a.key < b.key : a.id < b.id;
     });
+    interruption_point();
     for (size_t i = 0; i < th.size();) {
       size_t j = i;
       while (j < th.size() && th[j].key == th[i].key) ++j;

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "exact/interrupt.h"
 #include "exact/predicates.h"
 
 namespace gvm::mesh_internal {
@@ -179,6 +180,7 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
     }
     if (!too_many || attempt > 20) {
       tbb::parallel_sort(entries.begin(), entries.end());
+      interruption_point();  // a cancelled sort stops half done
       // Each entry's cell ends where the key changes.
       std::vector<size_t> cell_end(entries.size());
       for (size_t i = entries.size(); i-- > 0;) {
@@ -218,6 +220,7 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
         for (size_t seen = first.load(); a < seen && !first.compare_exchange_weak(seen, a);) {
         }
       });
+      interruption_point();  // entries left untested when cancelled
       if (first == entries.size()) return std::nullopt;
       return contact_from(first);
     }

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "exact/filtered.h"
+#include "exact/interrupt.h"
 #include "exact/predicates.h"
 #include "part/convex_hull.h"
 #include "part/potentially_facing.h"
@@ -205,6 +206,7 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
           I.hull[t] = exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[best[i]]) !=
                       Sign::kPositive;
         });
+        interruption_point();  // triangles left undecided when cancelled
         next.clear();
         for (size_t i = 0; i < level.size(); ++i)
           for (uint32_t u : m.neighbor[level[i]])
@@ -348,14 +350,21 @@ std::vector<uint32_t> Part::potential_occluders(
     if (cand.empty()) continue;
     const part_internal::PotentiallyFacing facing(m, s_r);
     std::vector<uint8_t> ok(cand.size(), 0);
-    tbb::parallel_for(size_t(0), cand.size(), [&](size_t ci) { ok[ci] = facing.faces(cand[ci]); });
+    tbb::parallel_for(size_t(0), cand.size(), [&](size_t ci) {
+      interruption_point();  // one search of S's triangles per candidate
+      ok[ci] = facing.faces(cand[ci]);
+    });
+    interruption_point();  // candidates left undecided when cancelled
     for (size_t ci = 0; ci < cand.size(); ++ci)
       if (ok[ci]) passed.push_back(cand[ci]);
   }
   std::sort(passed.begin(), passed.end());
   std::vector<uint32_t> out;
-  for (uint32_t t : passed)
+  Interruptions interruptions(16);
+  for (uint32_t t : passed) {
+    interruptions.tick();
     if (may_be_front_hit(t)) out.push_back(t);
+  }
   return out;
 }
 
@@ -365,8 +374,14 @@ StatusOr<std::map<std::string, std::vector<uint32_t>>> read_face_groups(
   if (!in) return NotFound(path + ": cannot open the face group file");
   std::stringstream ss;
   ss << in.rdbuf();
+  return parse_face_groups(ss.str(), face_count, path);
+}
+
+StatusOr<std::map<std::string, std::vector<uint32_t>>> parse_face_groups(
+    std::string_view json, uint32_t face_count, const std::string& path) {
   google::protobuf::Struct root;
-  auto st = google::protobuf::util::JsonStringToMessage(ss.str(), &root);
+  auto st = google::protobuf::util::JsonStringToMessage(
+      google::protobuf::StringPiece(json.data(), json.size()), &root);
   if (!st.ok())
     return InvalidArgument(path + ": not a JSON object of face groups: " +
                            std::string(st.message()));

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "exact/exact_vec.h"
+#include "exact/interrupt.h"
 #include "exact/predicates.h"
 
 namespace gvm::part_internal {
@@ -156,6 +157,7 @@ void group_by_plane(const SolidMesh& m, const std::vector<uint32_t>& s,
   for (auto& [key, members] : by_key) {
     std::vector<std::vector<uint32_t>> exact_groups;
     for (uint32_t t : members) {
+      interruption_point();  // each t is compared with every group of its key
       bool placed = false;
       for (auto& g : exact_groups) {
         const uint32_t r = g.front();

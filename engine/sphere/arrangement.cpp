@@ -1,5 +1,6 @@
 #include "sphere/arrangement.h"
 
+#include "exact/interrupt.h"
 #include "sphere/box_tree.h"
 #include "sphere/union_find.h"
 
@@ -107,7 +108,9 @@ void Arrangement::build_with_bridges(std::span<const ArrangementArc> arcs,
   }
   const BoxTree target_tree(target_boxes);
   std::vector<bool> done(vertices_.size(), false);
+  Interruptions interruptions;
   for (uint32_t v = 0; v < vertices_.size(); ++v) {
+    interruptions.tick();
     uint32_t c = uf.find(v);
     if (c == root || done[c] || targets.empty()) continue;
     done[c] = true;
@@ -178,7 +181,11 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   const BoxTree tree(boxes);
   const std::vector<std::pair<uint32_t, uint32_t>> pairs = tree.overlapping_pairs();
 
+  // The loops below run over every candidate pair, occurrence and arc: long on big
+  // arrangements (one union of large regions takes seconds), cheap per iteration.
+  Interruptions interruptions;
   for (auto [i, j] : pairs) {
+    interruptions.tick();
     const ArrangementArc& A = *arcs[i];
     const ArrangementArc& B = *arcs[j];
     if (exact::parallel(A.normal, B.normal)) {
@@ -211,6 +218,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   }
   // Input points (and the reference) lying inside arcs split them.
   for (size_t k = 0; k <= points.size(); ++k) {
+    interruptions.tick();
     const ExactVec& p = k < points.size() ? points[k].p : reference;
     Box b = point_box(exact::unit_estimate(p));
     for (uint32_t i : tree.overlapping(b)) {
@@ -237,6 +245,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     occ_boxes.push_back(point_box(exact::unit_estimate(occ[k])));
   }
   for (auto [i, j] : BoxTree(occ_boxes).overlapping_pairs()) {
+    interruptions.tick();
     const uint32_t a = distinct[i], b = distinct[j];
     if (same.find(a) != same.find(b) && exact::same_direction(occ[a], occ[b])) same.unite(a, b);
   }
@@ -258,6 +267,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   // Split every arc at its vertices, in order along it, and merge coinciding pieces.
   std::unordered_map<uint64_t, uint32_t> edge_index;
   for (size_t i = 0; i < arcs.size(); ++i) {
+    interruptions.tick();
     const ArrangementArc& arc = *arcs[i];
     std::vector<uint32_t> vs;
     for (uint32_t k : on_arc[i]) vs.push_back(vertex_of[k]);
@@ -349,7 +359,9 @@ void Arrangement::link_half_edges() {
     const Edge& e = edges_[half_[h].edge];
     return half_[h].forward ? e.normal : -e.normal;
   };
+  Interruptions interruptions;
   for (Vertex& v : vertices_) {
+    interruptions.tick();
     if (v.out.size() < 2) continue;
     const ExactVec n0 = oriented(v.out[0]);
     auto group = [&](const ExactVec& n) {
@@ -397,7 +409,9 @@ void Arrangement::label_faces(int layers, std::span<const int> reference_coverag
   std::vector<bool> known(faces_.size(), false);
   known[start] = true;
   std::vector<uint32_t> queue = {start};
+  Interruptions interruptions;
   for (size_t qi = 0; qi < queue.size(); ++qi) {
+    interruptions.tick();
     const uint32_t f = queue[qi];
     if (faces_[f].first_half_edge == UINT32_MAX) continue;
     uint32_t h = faces_[f].first_half_edge;

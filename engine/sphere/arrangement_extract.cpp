@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "exact/interrupt.h"
+
 #include "sphere/union_find.h"
 
 namespace gvm::sphere {
@@ -118,7 +120,9 @@ SphericalImage Arrangement::extract(const std::function<bool(uint32_t)>& face_in
   }
 
   // 0-cells.
+  Interruptions interruptions(16);  // vertex_in may probe rays
   for (uint32_t v = 0; v < vertices_.size(); ++v) {
+    interruptions.tick();
     if (on_curve[v] || !vertex_in(v)) continue;
     bool in_face = false;
     for (uint32_t h : vertices_[v].out) in_face |= fin[half_[h].face] != 0;

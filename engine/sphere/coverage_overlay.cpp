@@ -4,6 +4,7 @@
 #include <iterator>
 #include <unordered_map>
 
+#include "exact/interrupt.h"
 #include "sphere/arrangement.h"
 #include "sphere/cell_witness.h"
 #include "sphere/image_overlay.h"
@@ -108,7 +109,9 @@ void CoverageOverlay::Impl::walk(bool all_kinds, const std::function<void(const 
   seen[start] = true;
   visit_face(start, running, all_kinds, scratch, visit);
   std::vector<Frame> path = {{start, faces[start].first_half_edge, kNone}};
+  Interruptions interruptions;
   while (!path.empty()) {
+    interruptions.tick();
     Frame& top = path.back();
     if (top.cursor == kNone) {
       const uint32_t entry = top.entry;
@@ -198,7 +201,9 @@ std::vector<CoverageOverlay::MaximalCoverage> CoverageOverlay::maximal_coverage(
   });
   std::vector<MaximalCoverage> kept;
   std::vector<std::vector<uint32_t>> containing(impl_->count);  // set -> kept sets with it
+  Interruptions interruptions(64);
   for (MaximalCoverage& candidate : distinct) {
+    interruptions.tick();
     const std::vector<uint32_t>& s = candidate.coverage;
     uint32_t rarest = s[0];
     for (uint32_t k : s) {

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "exact/interrupt.h"
+
 namespace gvm::sphere {
 
 Region positive_region(std::span<const ArrangementArc> arcs, const exact::ExactVec& reference,
@@ -14,7 +16,9 @@ Region positive_region(std::span<const ArrangementArc> arcs, const exact::ExactV
   Region region;
   region.contains_reference = reference_coverage > 0;
   region.arrangement_vertices = arr.vertices().size();
+  Interruptions interruptions;
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
+    interruptions.tick();
     const Arrangement::Edge& edge = arr.edges()[e];
     // half[2e] runs v0 -> v1 with its face on the left.
     const bool left = arr.coverage(half[2 * e].face, 0) > 0;
@@ -54,6 +58,7 @@ Region region_union(std::vector<Region> parts, const exact::ExactVec& reference)
       merged[i] = positive_region(arcs, reference, int(a.contains_reference) + int(b.contains_reference));
       merged[i].arrangement_vertices += a.arrangement_vertices + b.arrangement_vertices;
     });
+    interruption_point();  // pairs left unmerged when cancelled
     parts = std::move(merged);
   }
   return std::move(parts[0]);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "exact/interrupt.h"
 #include "sphere/local_visibility_map.h"
 #include "visibility/direction_window.h"
 
@@ -89,7 +90,9 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
   std::vector<Chunk> chunks(s.size());
   tbb::parallel_for(size_t{0}, s.size(), [&](size_t si) {
     const Triangle& fs = mesh.triangles[s[si]];
+    Interruptions interruptions(16);
     for (size_t oi = 0; oi < o.size(); ++oi) {
+      interruptions.tick();
       if (K && !window->may_meet(&o_max[oi * K], &s_min[si * K])) {
         ++chunks[si].outside_window;
         continue;
@@ -105,6 +108,7 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
       if (map.dimension() == 2) chunks[si].maps.push_back(std::move(map));
     }
   });
+  interruption_point();  // triangles of S left undone when cancelled
   std::vector<SphericalImage> maps;
   for (Chunk& c : chunks) {
     if (stats) stats->outside_window += c.outside_window;

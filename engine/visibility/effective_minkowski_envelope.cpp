@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "exact/interrupt.h"
 #include "exact/predicates.h"
 #include "visibility/direction_window.h"
 #include "visibility/surface_topology.h"
@@ -138,8 +139,12 @@ void for_each_chunked(size_t n, std::vector<Partial>& out, const Body& body) {
   const size_t chunks = (n + kChunk - 1) / kChunk, base = out.size();
   out.resize(base + chunks);
   tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {
-    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) body(i, out[base + c]);
+    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+      interruption_point();  // one i runs over every vertex or edge of the other side
+      body(i, out[base + c]);
+    }
   });
+  interruption_point();  // chunks left undone when cancelled
 }
 
 // The window's values at the points of O and S, and the extremes over faces and edges,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "exact/interrupt.h"
 #include "sphere/arrangement.h"
 #include "sphere/image_overlay.h"
 #include "visibility/convex_decomposition.h"
@@ -76,7 +77,9 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
   if (stats) stats->envelope = eme.statistics;
   SumVertices sum(mesh);
   std::vector<std::vector<ExactVec>> faces;
+  Interruptions interruptions;
   for (const EnvelopeFace& f : eme.faces) {
+    interruptions.tick();
     std::vector<ExactVec> v;
     for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
     for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
@@ -237,7 +240,9 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   std::vector<sphere::Arc> grazing;  // visible parts of arcs of the LVM in Int(GOM)
   std::vector<uint8_t> edge_visible(arr.edges().size(), 0);
   int probed_arcs = 0, probed_points = 0, visible_points = 0;
+  Interruptions interruptions(64);
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
+    interruptions.tick();
     const auto& edge = arr.edges()[e];
     const uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
     const bool on_lvm_arc = arr.edge_on_layer(e, kLvm);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "exact/interrupt.h"
+
 namespace gvm {
 namespace {
 
@@ -27,6 +29,7 @@ sphere::Region occluded_directions(const OccludingCells& cells, const exact::Exa
   std::vector<std::pair<uint64_t, uint32_t>> order(cells.count);
   tbb::parallel_for(uint32_t{0}, static_cast<uint32_t>(cells.count),
                     [&](uint32_t i) { order[i] = {morton(cells.direction(i)), i}; });
+  interruption_point();
   std::sort(order.begin(), order.end());
   std::vector<sphere::Region> groups((order.size() + kGroupCells - 1) / kGroupCells);
   tbb::parallel_for(size_t{0}, groups.size(), [&](size_t g) {
@@ -38,6 +41,7 @@ sphere::Region occluded_directions(const OccludingCells& cells, const exact::Exa
     }
     groups[g] = sphere::positive_region(cells.boundary(members), reference, covering);
   });
+  interruption_point();  // groups left undone when cancelled
   return sphere::region_union(std::move(groups), reference);
 }
 

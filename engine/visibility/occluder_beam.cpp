@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "exact/interrupt.h"
+
 namespace gvm {
 namespace {
 
@@ -86,7 +88,9 @@ std::vector<uint32_t> occluders_in_beam(const SolidMesh& mesh, std::span<const u
   sources.reserve(s.size());
   for (uint32_t t : s) sources.push_back(ball_of(mesh, t));
   std::vector<uint32_t> kept;
+  Interruptions interruptions(16);  // one t runs over every triangle of S
   for (uint32_t t : o) {
+    interruptions.tick();
     const Ball target = ball_of(mesh, t);
     // Directions from a source ball to the target ball lie in a cone around w of half
     // angle asin((r_s + r_t) / |w|).

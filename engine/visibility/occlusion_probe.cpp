@@ -8,6 +8,7 @@
 #include <atomic>
 #include <span>
 
+#include "exact/interrupt.h"
 #include "sphere/spherical_image.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
@@ -197,10 +198,13 @@ void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Vis
   const std::vector<double> o_max = window.extremes(mesh_, o_, true);
   const std::vector<double> s_min = window.extremes(mesh_, s_, false);
   tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
+    Interruptions interruptions(64);
     for (size_t oi = 0; oi < o_.size(); ++oi) {
+      interruptions.tick();
       if (window.may_meet(&o_max[oi * K], &s_min[si * K]) && !visit(s_[si], o_[oi])) return;
     }
   });
+  interruption_point();  // pairs left unvisited when cancelled
 }
 
 bool OcclusionProbe::occluded(const ExactVec& u) const {

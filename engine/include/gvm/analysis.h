@@ -9,12 +9,17 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stop_token>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include <spdlog/fwd.h>
 
 #include "gvm/direction.h"
 #include "gvm/direction_set.h"
 #include "gvm/geometry.h"
+#include "gvm/mesh.h"
 #include "gvm/status.h"
 #include "gvm/v1/gvm.pb.h"
 
@@ -25,8 +30,17 @@ struct AnalyzeRequest {
   std::string groups_path;          // optional JSON of named face groups
   v1::AnalyzeOptions options;
   // Called now and then from the computing threads with (surfaces done, surfaces total);
-  // returning false cancels the analysis (kCancelled).
+  // returning false cancels the analysis (kCancelled), as a stop request does.
   std::function<bool(size_t, size_t)> progress;
+  // The part from memory instead of part_path when part_bytes is set (the bytes must outlive
+  // analyze()); part_name names it in messages and in the summary's source.
+  std::optional<std::string_view> part_bytes;
+  MeshFormat part_format = MeshFormat::kStl;
+  std::string part_name;
+  std::string groups_json;   // the face groups as JSON text instead of groups_path (same format)
+  uint32_t max_faces = 0;    // 0: no limit; more input faces -> kResourceExhausted before validation, naming the count and the limit
+  std::stop_token stop;      // a stop request cancels the analysis within milliseconds (kCancelled)
+  std::shared_ptr<spdlog::logger> logger;  // null: spdlog's default logger (a daemon gives each request its own, so lines carry the request id)
 };
 
 // What the map called gvm is, for one surface.
@@ -96,9 +110,12 @@ class Analysis {
   // The surface made of any set of input faces, with its maps computed now as for a
   // feature, with the analysis's options (to plan an unreachable feature piece by piece);
   // its id and name are left unset. kInvalidArgument names a face not in the part.
+  // Called inside a TBB task group that gets cancelled (the planner's, on a stop request),
+  // it stops within milliseconds with kCancelled.
   StatusOr<Surface> surface_of(std::span<const uint32_t> faces) const;
   // The input faces that rays from the given faces along u meet from the front (they
   // enter the solid there), decided exactly; u should be in the faces' LVM(S + N_S).
+  // Empty when the calling TBB task group is cancelled.
   std::vector<uint32_t> blocking_faces(std::span<const uint32_t> faces, const Direction& u) const;
   // The given faces in maximal edge-connected pieces that lie in one plane with one
   // orientation (a triangulated CAD face is one piece; each facet of a curved face is
@@ -112,6 +129,9 @@ class Analysis {
   std::shared_ptr<const Impl> impl_;  // immutable: copies share it
 };
 
+// kInvalidArgument for an unreadable or invalid part or face groups, kNotFound for a
+// file that cannot be opened, kResourceExhausted above max_faces, kCancelled on a stop
+// request or when progress returns false.
 StatusOr<Analysis> analyze(const AnalyzeRequest& request);
 
 }  // namespace gvm

@@ -8,6 +8,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gvm/mesh.h"
@@ -84,5 +85,9 @@ class Part {
 // an input face of a part with `face_count` faces; a face may be in one group only.
 StatusOr<std::map<std::string, std::vector<uint32_t>>> read_face_groups(
     const std::string& path, uint32_t face_count);
+
+// The same from the JSON text itself; `source` names it in messages (as the path does).
+StatusOr<std::map<std::string, std::vector<uint32_t>>> parse_face_groups(
+    std::string_view json, uint32_t face_count, const std::string& source);
 
 }  // namespace gvm
