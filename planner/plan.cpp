@@ -6,11 +6,13 @@
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <chrono>
 #include <numeric>
 #include <optional>
+#include <stop_token>
 #include <tuple>
 
 #include "exact_cover.h"
@@ -38,9 +40,12 @@ std::unique_ptr<Mode> make_mode(const v1::PlanOptions& o) {
 
 class Planner {
  public:
+  // Runs in a task of `ctx`, which a stop request cancels: its parallel loops then stop
+  // early (each is followed by a check), and the engine's calls inside it give up
+  // (Analysis::surface_of answers kCancelled, others may throw; plan() maps both).
   Planner(const Analysis& analysis, const v1::PlanOptions& options, const PlanControl& control,
-          int threads)
-      : mode_(make_mode(options)), control_(control) {
+          int threads, tbb::task_group_context& ctx)
+      : mode_(make_mode(options)), control_(control), ctx_(ctx) {
     state_.times.threads = static_cast<uint32_t>(threads);
     state_.analysis = &analysis;
     state_.options = options;
@@ -56,6 +61,7 @@ class Planner {
     if (!covered.ok()) return covered;
     if (!keep_going("placement", 0, 1)) return cancelled();
     place_setups();
+    if (!keep_going("reasons", 0, 1)) return cancelled();
     if (!explain_unreachable()) return cancelled();
     state_.times.total = seconds_since(t0);
     SetupPlan out;
@@ -67,9 +73,16 @@ class Planner {
  private:
   static Status cancelled() { return Status(StatusCode::kCancelled, "planning cancelled"); }
 
+  // False once stopped (a stop request, or progress saying so: then the task group is
+  // cancelled too, so that parallel work in flight winds down).
   bool keep_going(std::string_view phase, size_t done, size_t total) {
+    if (stopped_ || ctx_.is_group_execution_cancelled()) {
+      stopped_ = true;
+      return false;
+    }
     if (!control_.progress || control_.progress(phase, done, total)) return true;
     stopped_ = true;
+    ctx_.cancel_group_execution();
     return false;
   }
 
@@ -103,8 +116,9 @@ class Planner {
       std::vector<std::optional<Surface>> maps(pieces.size());
       tbb::parallel_for(size_t{0}, pieces.size(), [&](size_t i) {
         StatusOr<Surface> piece = state_.analysis->surface_of(pieces[i]);
-        if (piece.ok()) maps[i] = std::move(*piece);  // the faces come from the part: cannot fail
+        if (piece.ok()) maps[i] = std::move(*piece);  // the faces come from the part: only a cancel fails
       });
+      if (!keep_going("split", k, state_.unreachable.size())) return false;  // pieces left undone
       for (size_t i = 0; i < pieces.size(); ++i) {
         if (!maps[i]) continue;
         const Surface& piece = *maps[i];
@@ -196,6 +210,7 @@ class Planner {
       setups.push_back({state_.candidates.candidates[candidate], std::move(assigned)});
     }
     place(setups, std::vector<char>(setups.size(), 1));
+    if (ctx_.is_group_execution_cancelled()) return;  // setups left unplaced: run() stops
     // Once the directions are known, a target served by several setups goes to the one
     // where it has the most room (a side face machined from the side rather than grazed
     // from the top); setups that changed are placed again from where they are.
@@ -276,6 +291,7 @@ class Planner {
       UnreachableSurface& u = state_.unreachable[k];
       explain(*state_.analysis, *state_.surfaces[u.surface], u);
     });
+    if (!keep_going("reasons", state_.unreachable.size(), state_.unreachable.size())) return false;
     state_.times.unreachable += seconds_since(t0);
     return true;
   }
@@ -290,6 +306,7 @@ class Planner {
 
   std::unique_ptr<Mode> mode_;
   const PlanControl& control_;
+  tbb::task_group_context& ctx_;
   PlanState state_;
   bool stopped_ = false;
 };
@@ -303,8 +320,26 @@ StatusOr<SetupPlan> plan(const Analysis& analysis, const v1::PlanOptions& option
   const int threads = applied.threads() > 0 ? static_cast<int>(applied.threads())
                                             : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
+  // Everything runs as one task of `ctx` (so that the engine's interruption points in
+  // serial code see it); a stop request cancels the group, which nested loops inherit.
+  tbb::task_group_context ctx;
+  const std::stop_callback on_stop(control.stop, [&ctx] { ctx.cancel_group_execution(); });
+  const Status cancelled(StatusCode::kCancelled, "planning cancelled");
   std::optional<StatusOr<SetupPlan>> out;
-  arena.execute([&] { out.emplace(Planner(analysis, applied, control, threads).run()); });
+  arena.execute([&] {
+    tbb::task_group group(ctx);
+    group.run_and_wait([&] {
+      try {
+        out.emplace(Planner(analysis, applied, control, threads, ctx).run());
+      } catch (...) {
+        // The engine's internal interruption (an overlay or arrangement given up), or
+        // anything a cancelled computation left behind; other failures propagate.
+        if (!ctx.is_group_execution_cancelled()) throw;
+        out.emplace(cancelled);
+      }
+    });
+  });
+  if (!out || ctx.is_group_execution_cancelled()) return cancelled;
   return std::move(*out);
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -24,6 +25,9 @@ v1::PlanOptions with_defaults(const v1::PlanOptions& options);
 struct PlanControl {
   // Called now and then with (phase, done, total); returning false cancels (kCancelled).
   std::function<bool(std::string_view phase, size_t done, size_t total)> progress;
+  // A stop request cancels the plan within about a second (kCancelled), also inside the
+  // exact cover's overlay, the Cbc search and the maps of --split pieces.
+  std::stop_token stop;
 };
 
 struct SetupPlan {
@@ -34,7 +38,8 @@ struct SetupPlan {
 };
 
 // Plans from an analysis (only read; the plan keeps copies of what it needs).
-// Fails with kInvalidArgument for bad options, kCancelled when the control says so.
+// Fails with kInvalidArgument for bad options, kCancelled when the control says so (a
+// stop request, or progress returning false).
 StatusOr<SetupPlan> plan(const Analysis& analysis, const v1::PlanOptions& options,
                          const PlanControl& control = {});
 
