@@ -8,6 +8,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libgmp-dev
   coinor-libcbc-dev
+  libgrpc++-dev protobuf-compiler-grpc grpc-proto libssl-dev libcli11-dev
+  python3-grpcio python3-protobuf
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -5,8 +5,22 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "gvm/analysis_proto.h"
+#include "remote_client.h"
 
 namespace gvm::cli {
+
+namespace {
+
+// The report and the JSON, the same whether the analysis ran here or on a daemon.
+int emit(const AnalysisArgs& args, const v1::Analysis& result) {
+  if (!args.json.empty() && !write_output(args.json, to_json(result))) {
+    return failure("cannot write JSON to '" + args.json + "'");
+  }
+  if (!args.quiet && args.json != "-") print_report(result, std::cout);
+  return 0;
+}
+
+}  // namespace
 
 int run_analyze(const std::vector<std::string>& argv) {
   AnalysisArgs args;
@@ -15,17 +29,15 @@ int run_analyze(const std::vector<std::string>& argv) {
     if (auto exit = parse_analysis_arg(argv, i, args, &mine)) return *exit;
     if (!mine) return usage_error("unknown option '" + argv[i] + "'");
   }
-  if (args.part.empty()) return usage_error("analyze needs a PART file");
+  if (auto exit = check_parts(args, "analyze")) return *exit;
   set_log_level(args);
+  if (!args.server.empty()) {
+    return remote_analyze(args, [&](const std::string&, const v1::AnalyzeResponse& r) { return emit(args, r.analysis()); });
+  }
 
   auto analysis = analyze(analyze_request(args));
   if (!analysis.ok()) return failure(analysis.status().message());
-  const v1::Analysis result = to_proto(*analysis);
-  if (!args.json.empty() && !write_output(args.json, to_json(result))) {
-    return failure("cannot write JSON to '" + args.json + "'");
-  }
-  if (!args.quiet && args.json != "-") print_report(result, std::cout);
-  return 0;
+  return emit(args, to_proto(*analysis));
 }
 
 }  // namespace gvm::cli

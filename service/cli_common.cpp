@@ -78,19 +78,26 @@ std::optional<int> parse_analysis_arg(const std::vector<std::string>& argv, size
     args.verbose = true;
   } else if (a == "-q" || a == "--quiet") {
     args.quiet = true;
+  } else if (a == "--server") {
+    auto v = value();
+    if (!v || v->empty()) return usage_error("--server needs the daemon's address, e.g. unix:/run/user/1000/gvmd.sock");
+    args.server = *v;
+  } else if (a == "--timeout") {
+    auto v = value();
+    if (!v || !parse_number(*v, args.timeout_seconds) || !(args.timeout_seconds > 0)) {
+      return usage_error("--timeout needs a number of seconds > 0");
+    }
   } else if (!a.empty() && a[0] == '-' && a != "-") {
     *mine = false;
-  } else if (args.part.empty()) {
-    args.part = a;
   } else {
-    return usage_error("more than one PART given ('" + args.part + "', '" + a + "')");
+    args.parts.push_back(a);
   }
   return std::nullopt;
 }
 
 AnalyzeRequest analyze_request(const AnalysisArgs& args) {
   AnalyzeRequest request;
-  request.part_path = args.part;
+  request.part_path = args.parts.empty() ? std::string() : args.parts.front();
   request.groups_path = args.groups;
   request.options.set_threads(args.threads);
   request.options.set_lvm_only(args.lvm_only);
@@ -99,6 +106,20 @@ AnalyzeRequest analyze_request(const AnalysisArgs& args) {
   }
   if (args.feature_angle) request.options.set_feature_angle_degrees(*args.feature_angle);
   return request;
+}
+
+std::optional<int> check_parts(const AnalysisArgs& args, const char* command) {
+  if (args.parts.empty()) return usage_error(std::string(command) + " needs a PART file");
+  if (args.server.empty()) {
+    if (args.parts.size() > 1) {
+      return usage_error("more than one PART given ('" + args.parts[0] + "', '" + args.parts[1] +
+                         "'); several parts are submitted together with --server");
+    }
+    if (args.timeout_seconds > 0) return usage_error("--timeout is the daemon's deadline: it needs --server");
+  } else if (args.parts.size() > 1 && !args.json.empty()) {
+    return usage_error("--json writes one part's result: give one PART with it");
+  }
+  return std::nullopt;
 }
 
 void set_log_level(const AnalysisArgs& args) {

@@ -27,7 +27,9 @@ bool write_output(const std::string& path, const std::string& content);
 
 // The options every command that analyses a part takes.
 struct AnalysisArgs {
-  std::string part;
+  std::vector<std::string> parts;    // one, or several with --server
+  std::string server;                // --server ADDRESS: run on a daemon (gvmd)
+  double timeout_seconds = 0;        // --timeout: the daemon's deadline (0: none)
   std::string groups;
   std::string json;                  // the command's main JSON output
   std::optional<double> feature_angle;
@@ -45,6 +47,9 @@ std::optional<int> parse_analysis_arg(const std::vector<std::string>& argv, size
                                       AnalysisArgs& args, bool* mine);
 
 AnalyzeRequest analyze_request(const AnalysisArgs& args);
+// Exit status of a usage error when the parts given do not fit the options (several
+// parts need --server; --json then needs one part).
+std::optional<int> check_parts(const AnalysisArgs& args, const char* command);
 void set_log_level(const AnalysisArgs& args);
 
 // "gvm: message" to stderr; returns 1.

@@ -17,6 +17,8 @@ Usage:
   gvm plan PART [options]       the fewest setups (or rotary axes, or probe head
                                 orientations) that reach every feature, provably
   gvm analyze PART [options]    every concave region and feature with its maps
+  gvm plan|analyze --server ADDRESS PART... [options]
+                                the same on a daemon (gvmd), several parts at once
   gvm --help                    show this help
   gvm --version                 show the version
 
@@ -41,6 +43,10 @@ Options of both commands:
   --lvm-only           skip the occlusion by O_S (effective Minkowski envelope):
                        report LVM(S + N_S) only, an outer bound of each GVM
                        that takes a fraction of the time
+  --server ADDRESS     run on the daemon gvmd listening at ADDRESS (unix:PATH, as
+                       gvmd prints on start); several PARTs are submitted at
+                       once and printed in order; the output is the same
+  --timeout SEC        with --server: the request's deadline
   -v, --verbose        log details to standard error
   -q, --quiet          print only errors (no report)
 

@@ -11,6 +11,7 @@
 #include "gvm/analysis_proto.h"
 #include "gvm/planner/plan.h"
 #include "plan_report.h"
+#include "remote_client.h"
 
 namespace gvm::cli {
 namespace {
@@ -157,6 +158,17 @@ planner::PlanControl progress_log() {
   return control;
 }
 
+// The JSON files and the report, the same whether the plan was made here or on a daemon.
+int emit(const PlanArgs& args, const v1::Plan& plan, const v1::Analysis* analysis) {
+  const std::string& json = args.analysis.json;
+  if (!json.empty() && !write_output(json, to_json(plan))) return failure("cannot write JSON to '" + json + "'");
+  if (analysis && !write_output(args.analysis_json, to_json(*analysis))) {
+    return failure("cannot write the analysis JSON to '" + args.analysis_json + "'");
+  }
+  if (!args.analysis.quiet && json != "-" && args.analysis_json != "-") print_plan(plan, std::cout);
+  return 0;
+}
+
 }  // namespace
 
 int run_plan(const std::vector<std::string>& argv) {
@@ -167,25 +179,27 @@ int run_plan(const std::vector<std::string>& argv) {
     if (mine) continue;
     if (auto exit = parse_plan_arg(argv, i, args)) return *exit;
   }
-  if (args.analysis.part.empty()) return usage_error("plan needs a PART file");
+  if (auto exit = check_parts(args.analysis, "plan")) return *exit;
+  if (!args.analysis_json.empty() && args.analysis.parts.size() > 1) {
+    return usage_error("--analysis-json writes one part's analysis: give one PART with it");
+  }
   args.options.set_threads(args.analysis.threads);
   if (Status s = planner::validate(args.options); !s.ok()) return usage_error(with_flag_names(s.message()));
   set_log_level(args.analysis);
+  const bool with_analysis = !args.analysis_json.empty();
+  if (!args.analysis.server.empty()) {
+    return remote_plan(args.analysis, args.options, with_analysis, [&](const std::string&, const v1::PlanResponse& r) {
+      return emit(args, r.plan(), with_analysis ? &r.analysis() : nullptr);
+    });
+  }
 
   auto analysis = analyze(analyze_request(args.analysis));
   if (!analysis.ok()) return failure(analysis.status().message());
   auto plan = planner::plan(*analysis, args.options, progress_log());
   if (!plan.ok()) return failure(plan.status().message());
-
-  const std::string& json = args.analysis.json;
-  if (!json.empty() && !write_output(json, to_json(plan->message))) {
-    return failure("cannot write JSON to '" + json + "'");
-  }
-  if (!args.analysis_json.empty() && !write_output(args.analysis_json, to_json(to_proto(*analysis)))) {
-    return failure("cannot write the analysis JSON to '" + args.analysis_json + "'");
-  }
-  if (!args.analysis.quiet && json != "-" && args.analysis_json != "-") print_plan(plan->message, std::cout);
-  return 0;
+  if (!with_analysis) return emit(args, plan->message, nullptr);
+  const v1::Analysis message = to_proto(*analysis);
+  return emit(args, plan->message, &message);
 }
 
 }  // namespace gvm::cli

@@ -14,9 +14,11 @@ enum class StatusCode : int {
   kInvalidArgument = 3,
   kDeadlineExceeded = 4,
   kNotFound = 5,
+  kPermissionDenied = 7,
   kFailedPrecondition = 9,
   kResourceExhausted = 8,
   kInternal = 13,
+  kUnavailable = 14,
 };
 
 class [[nodiscard]] Status {
