@@ -98,8 +98,8 @@ struct AccessibilityService::Job {
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     log->info("{} from {}: '{}' sha256 {}{}: {} in {:.3f} s{}{}", method, context->peer(), name, hash.substr(0, 12),
-              faces ? " " + std::to_string(faces) + " faces" : "", code_name(out.error_code()), seconds,
-              cached ? " (cached)" : "", out.ok() ? "" : " - " + out.error_message());
+              faces ? fmt::format(" {} faces", faces) : std::string(), code_name(out.error_code()), seconds,
+              cached ? " (cached)" : "", out.ok() ? std::string() : fmt::format(" - {}", out.error_message()));
     return out;
   }
 };
