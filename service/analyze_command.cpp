@@ -1,5 +1,7 @@
 // gvm analyze: every region and feature with its maps, as a report and as JSON.
+#include <CLI/CLI.hpp>
 #include <iostream>
+#include <memory>
 
 #include "analysis_report.h"
 #include "cli_common.h"
@@ -20,15 +22,7 @@ int emit(const AnalysisArgs& args, const v1::Analysis& result) {
   return 0;
 }
 
-}  // namespace
-
-int run_analyze(const std::vector<std::string>& argv) {
-  AnalysisArgs args;
-  for (size_t i = 0; i < argv.size(); ++i) {
-    bool mine = true;
-    if (auto exit = parse_analysis_arg(argv, i, args, &mine)) return *exit;
-    if (!mine) return usage_error("unknown option '" + argv[i] + "'");
-  }
+int run_analyze(const AnalysisArgs& args) {
   if (auto exit = check_parts(args, "analyze")) return *exit;
   set_log_level(args);
   if (!args.server.empty()) {
@@ -38,6 +32,15 @@ int run_analyze(const std::vector<std::string>& argv) {
   auto analysis = analyze(analyze_request(args));
   if (!analysis.ok()) return failure(analysis.status().message());
   return emit(args, to_proto(*analysis));
+}
+
+}  // namespace
+
+Run add_analyze(CLI::App& gvm) {
+  CLI::App* command = gvm.add_subcommand("analyze", "every concave region and feature with its maps");
+  auto args = std::make_shared<AnalysisArgs>();
+  add_analysis_options(*command, *args);
+  return [args] { return run_analyze(*args); };
 }
 
 }  // namespace gvm::cli

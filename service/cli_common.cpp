@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -38,61 +39,58 @@ bool write_output(const std::string& path, const std::string& content) {
   return !ec;
 }
 
-std::optional<int> parse_analysis_arg(const std::vector<std::string>& argv, size_t& i,
-                                      AnalysisArgs& args, bool* mine) {
-  *mine = true;
-  const std::string& a = argv[i];
-  auto value = [&]() -> std::optional<std::string> {
-    if (i + 1 >= argv.size()) return std::nullopt;
-    return argv[++i];
+CLI::Option* add_value(CLI::App& command, const std::string& name, const std::string& meta,
+                       const std::string& needs, std::function<bool(const std::string&)> read) {
+  auto apply = [name, needs, read = std::move(read)](const std::string& value) {
+    if (!read(value)) throw CLI::ValidationError(name + " needs " + needs + " (not '" + value + "')");
   };
-  if (a == "--groups") {
-    auto v = value();
-    if (!v) return usage_error("--groups needs a FILE");
-    args.groups = *v;
-  } else if (a == "--json") {
-    auto v = value();
-    if (!v) return usage_error("--json needs an output FILE");
-    args.json = *v;
-  } else if (a == "--threads") {
-    auto v = value();
-    if (!v || !parse_number(*v, args.threads) || args.threads == 0 || args.threads > 1024) {
-      return usage_error("--threads needs a number from 1 to 1024");
-    }
-  } else if (a == "--feature-angle") {
+  return command.add_option_function<std::string>(name, apply)->type_name(meta);
+}
+
+namespace {
+
+// What to analyse and how: the options that change the maps.
+void add_map_options(CLI::App& command, AnalysisArgs& args) {
+  command.add_option("PART", args.parts, "mesh file(s); several with --server")->type_name("PART");
+  command.add_option("--groups", args.groups)->type_name("FILE");
+  add_value(command, "--feature-angle", "DEG", "an angle in degrees, 0 < DEG < 180", [&args](const std::string& v) {
     double deg = 0;
-    auto v = value();
-    if (!v || !parse_number(*v, deg) || !(deg > 0 && deg < 180)) {
-      return usage_error("--feature-angle needs an angle in degrees, 0 < DEG < 180");
-    }
+    if (!parse_number(v, deg) || !(deg > 0 && deg < 180)) return false;
     args.feature_angle = deg;
-  } else if (a == "--method") {
-    auto v = value();
-    if (!v || (*v != "eme" && *v != "convex")) return usage_error("--method needs eme or convex");
-    args.convex = *v == "convex";
-  } else if (a == "--lvm-only") {
-    args.lvm_only = true;
-  } else if (a == "--global-occlusion") {
-    // The default since 0.2; still accepted so that existing scripts keep working.
-  } else if (a == "-v" || a == "--verbose") {
-    args.verbose = true;
-  } else if (a == "-q" || a == "--quiet") {
-    args.quiet = true;
-  } else if (a == "--server") {
-    auto v = value();
-    if (!v || v->empty()) return usage_error("--server needs the daemon's address, e.g. unix:/run/user/1000/gvmd.sock");
-    args.server = *v;
-  } else if (a == "--timeout") {
-    auto v = value();
-    if (!v || !parse_number(*v, args.timeout_seconds) || !(args.timeout_seconds > 0)) {
-      return usage_error("--timeout needs a number of seconds > 0");
-    }
-  } else if (!a.empty() && a[0] == '-' && a != "-") {
-    *mine = false;
-  } else {
-    args.parts.push_back(a);
-  }
-  return std::nullopt;
+    return true;
+  });
+  add_value(command, "--method", "M", "eme or convex", [&args](const std::string& v) {
+    args.convex = v == "convex";
+    return args.convex || v == "eme";
+  });
+  command.add_flag("--lvm-only", args.lvm_only);
+  // The default since 0.2; still accepted so that existing scripts keep working.
+  command.add_flag("--global-occlusion")->group("");
+}
+
+// Where it runs and what it prints: the same maps whatever these say.
+void add_run_options(CLI::App& command, AnalysisArgs& args) {
+  command.add_option("--json", args.json)->type_name("OUT");
+  add_value(command, "--threads", "N", "a number from 1 to 1024", [&args](const std::string& v) {
+    return parse_number(v, args.threads) && args.threads >= 1 && args.threads <= 1024;
+  });
+  add_value(command, "--server", "ADDRESS", "the daemon's address, e.g. unix:/run/user/1000/gvmd.sock",
+            [&args](const std::string& v) {
+              args.server = v;
+              return !v.empty();
+            });
+  add_value(command, "--timeout", "SEC", "a number of seconds > 0", [&args](const std::string& v) {
+    return parse_number(v, args.timeout_seconds) && args.timeout_seconds > 0;
+  });
+  command.add_flag("-v,--verbose", args.verbose);
+  command.add_flag("-q,--quiet", args.quiet);
+}
+
+}  // namespace
+
+void add_analysis_options(CLI::App& command, AnalysisArgs& args) {
+  add_map_options(command, args);
+  add_run_options(command, args);
 }
 
 AnalyzeRequest analyze_request(const AnalysisArgs& args) {

@@ -3,11 +3,18 @@
 #pragma once
 
 #include <charconv>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "gvm/analysis.h"
+
+// CLI11 stays out of this header: remote_client.cpp includes it too.
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace gvm::cli {
 
@@ -40,11 +47,17 @@ struct AnalysisArgs {
   bool quiet = false;
 };
 
-// Reads argv[i] (and its value, advancing i) when it is one of the shared options or the
-// PART. Returns nothing when consumed, an exit status on a usage error; sets *mine to
-// false when the argument is not a shared option (the command decides).
-std::optional<int> parse_analysis_arg(const std::vector<std::string>& argv, size_t& i,
-                                      AnalysisArgs& args, bool* mine);
+// Adds the option `name` taking one value (METAVAR `meta`) that `read` parses into its
+// destination. We read values ourselves rather than with CLI11's typed options: numbers
+// the way the rest of gvm reads them (from_chars: "010" is ten, not octal eight; doubles
+// rounded once), and a refused value gets a usage error naming the option and saying
+// what it `needs` ("an angle in degrees, 0 < DEG < 180"), not only that it is invalid.
+CLI::Option* add_value(CLI::App& command, const std::string& name, const std::string& meta,
+                       const std::string& needs, std::function<bool(const std::string&)> read);
+
+// The PARTs and the options every command that analyses a part takes, read into args
+// (which must outlive the parse).
+void add_analysis_options(CLI::App& command, AnalysisArgs& args);
 
 AnalyzeRequest analyze_request(const AnalysisArgs& args);
 // Exit status of a usage error when the parts given do not fit the options (several

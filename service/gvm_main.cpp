@@ -2,7 +2,10 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,29 +85,76 @@ approaches along -u. Faces are numbered from 0 in input-file order.
 Exit status: 0 success, 1 invalid input or failure, 2 usage error.
 )";
 
-}  // namespace
+// -h/--help anywhere prints the whole usage at once, as before CLI11: its own help flag
+// would first check every other value given.
+void add_help_flag(CLI::App& command) {
+  command.set_help_flag();
+  command.add_flag_callback("-h,--help", [] { throw CLI::CallForHelp(); }, "show this help")->trigger_on_parse();
+}
 
-int main(int argc, char** argv) {
+// The first argument no command took: a word where a command belongs, or an option.
+int unknown(const std::string& arg) {
+  return gvm::cli::usage_error(std::string(arg.starts_with('-') ? "unknown option '" : "unknown command '") + arg + "'");
+}
+
+int usage() {
+  std::cout << kUsage;
+  return 0;
+}
+
+void set_up_logging() {
   auto logger = spdlog::stderr_color_mt("gvm");
   spdlog::set_default_logger(logger);
   spdlog::set_pattern("gvm: %v");
   spdlog::set_level(spdlog::level::info);
+}
 
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty()) return gvm::cli::usage_error("no command given");
-  const std::string command = args.front();
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  for (const std::string& a : args) {
-    if (a == "--help" || a == "-h" || (a == "help" && &a == &args.front())) {
-      std::cout << kUsage;
-      return 0;
-    }
-  }
-  if (command == "--version") {
-    std::cout << "gvm " << GVM_VERSION << "\n";
+// The commands and the options they share with the top level; how to run each command.
+std::map<std::string, gvm::cli::Run> add_commands(CLI::App& app) {
+  // As before CLI11: an option given twice takes its last value; unknown arguments are
+  // kept, not thrown, so that the message can say "unknown command" or "unknown option".
+  // Subcommands inherit both when added.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.allow_extras();
+  // One command: then "help" or "analyze" after `gvm plan` are PARTs, as before CLI11.
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", std::string("gvm ") + GVM_VERSION, "show the version");
+  std::map<std::string, gvm::cli::Run> commands = {{"analyze", gvm::cli::add_analyze(app)},
+                                                    {"plan", gvm::cli::add_plan(app)}};
+  app.add_subcommand("help", "show this help")->allow_extras();
+  add_help_flag(app);
+  for (const auto& [name, run] : commands) add_help_flag(*app.get_subcommand(name));
+  return commands;
+}
+
+// Parses argv into app's options; the exit status when that decides it (help, version,
+// a usage error).
+std::optional<int> parse(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    return usage();
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
     return 0;
+  } catch (const CLI::ParseError& e) {
+    return gvm::cli::usage_error(e.what());
   }
-  if (command == "analyze") return gvm::cli::run_analyze(rest);
-  if (command == "plan") return gvm::cli::run_plan(rest);
-  return gvm::cli::usage_error("unknown command '" + command + "'");
+  return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  set_up_logging();
+  CLI::App app{"gvm - exact global visibility maps and setup plans of CAD parts", "gvm"};
+  const std::map<std::string, gvm::cli::Run> commands = add_commands(app);
+  if (std::optional<int> exit = parse(app, argc, argv)) return *exit;
+
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  const std::string command = chosen.empty() ? std::string() : chosen.front()->get_name();
+  if (command == "help") return usage();  // whatever follows it
+  if (const std::vector<std::string> extra = app.remaining(true); !extra.empty()) return unknown(extra.front());
+  if (command.empty()) return gvm::cli::usage_error("no command given");
+  return commands.at(command)();
 }

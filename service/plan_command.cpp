@@ -1,9 +1,12 @@
 // gvm plan: the fewest setups (or rotary axes, or probe orientations) for a part.
 #include <spdlog/spdlog.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "cli_common.h"
@@ -71,63 +74,55 @@ bool parse_axis(const std::string& text, v1::Vec3* out) {
   return true;
 }
 
-// Reads argv[i] as a plan option; returns an exit status on a usage error.
-std::optional<int> parse_plan_arg(const std::vector<std::string>& argv, size_t& i, PlanArgs& args) {
-  const std::string& a = argv[i];
+// A number that is finite, read as every number of gvm (see add_value).
+bool finite_number(const std::string& text, double& out) { return parse_number(text, out) && std::isfinite(out); }
+
+bool read_mode(const std::string& text, v1::PlanOptions& o) {
+  static const std::map<std::string, v1::PlanMode> kModes = {
+      {"setup", v1::PLAN_MODE_SETUP}, {"rotary", v1::PLAN_MODE_ROTARY}, {"probe", v1::PLAN_MODE_PROBE}};
+  const auto it = kModes.find(text);
+  if (it != kModes.end()) o.set_mode(it->second);
+  return it != kModes.end();
+}
+
+bool read_surfaces(const std::string& text, v1::PlanOptions& o) {
+  if (text != "features" && text != "regions") return false;
+  o.set_surfaces(text == "features" ? v1::PLAN_SURFACES_FEATURES : v1::PLAN_SURFACES_REGIONS);
+  return true;
+}
+
+// Adds a finite number option whose value `set` stores; the planner checks its range.
+void add_finite(CLI::App& plan, const std::string& name, const std::string& meta, const std::string& needs,
+                std::function<void(double)> set) {
+  add_value(plan, name, meta, needs, [set = std::move(set)](const std::string& v) {
+    double x = 0;
+    if (!finite_number(v, x)) return false;
+    set(x);
+    return true;
+  });
+}
+
+// What is planned, and how: every mode.
+void add_plan_options(CLI::App& plan, PlanArgs& args) {
   v1::PlanOptions& o = args.options;
-  auto value = [&]() -> std::optional<std::string> {
-    if (i + 1 >= argv.size()) return std::nullopt;
-    return argv[++i];
-  };
-  auto number = [&](const char* what, double& out) -> std::optional<int> {
-    auto v = value();
-    if (!v || !parse_number(*v, out) || !std::isfinite(out)) return usage_error(a + " needs " + what);
-    return std::nullopt;
-  };
-  double x = 0;
-  if (a == "--mode") {
-    auto v = value();
-    if (!v || (*v != "setup" && *v != "rotary" && *v != "probe")) {
-      return usage_error("--mode needs setup, rotary or probe" + (v ? " (not '" + *v + "')" : std::string()));
-    }
-    o.set_mode(*v == "setup" ? v1::PLAN_MODE_SETUP : *v == "rotary" ? v1::PLAN_MODE_ROTARY : v1::PLAN_MODE_PROBE);
-  } else if (a == "--surfaces") {
-    auto v = value();
-    if (!v || (*v != "features" && *v != "regions")) return usage_error("--surfaces needs features or regions");
-    o.set_surfaces(*v == "features" ? v1::PLAN_SURFACES_FEATURES : v1::PLAN_SURFACES_REGIONS);
-  } else if (a == "--concave-only") {
-    o.set_concave_only(true);
-  } else if (a == "--planar-normal") {
-    o.set_planar_normal(true);
-  } else if (a == "--split") {
-    o.set_split(true);
-  } else if (a == "--min-clearance") {
-    if (auto e = number("an angle in degrees", x)) return e;
-    o.set_min_clearance_degrees(x);
-  } else if (a == "--time-limit") {
-    if (auto e = number("a number of seconds", x)) return e;
-    o.set_time_limit_seconds(x);
-  } else if (a == "--cone") {
-    if (auto e = number("an angle in degrees", x)) return e;
-    o.set_cone_degrees(x);
-  } else if (a == "--head") {
-    auto v = value();
-    if (!v || !parse_head(*v, o.mutable_head())) {
-      return usage_error("--head needs A_MIN:A_MAX:B_MIN:B_MAX:STEP in degrees, e.g. 0:105:-180:180:7.5");
-    }
-  } else if (a == "--part-up") {
-    auto v = value();
-    if (!v || !parse_axis(*v, o.mutable_part_up())) {
-      return usage_error("--part-up needs an axis (+x, -y, z, ...) or a vector X,Y,Z");
-    }
-  } else if (a == "--analysis-json") {
-    auto v = value();
-    if (!v) return usage_error("--analysis-json needs an output FILE");
-    args.analysis_json = *v;
-  } else {
-    return usage_error("unknown option '" + a + "'");
-  }
-  return std::nullopt;
+  add_value(plan, "--mode", "M", "setup, rotary or probe", [&o](const std::string& v) { return read_mode(v, o); });
+  add_value(plan, "--surfaces", "S", "features or regions", [&o](const std::string& v) { return read_surfaces(v, o); });
+  plan.add_flag_callback("--concave-only", [&o] { o.set_concave_only(true); });
+  plan.add_flag_callback("--planar-normal", [&o] { o.set_planar_normal(true); });
+  plan.add_flag_callback("--split", [&o] { o.set_split(true); });
+  add_finite(plan, "--time-limit", "SEC", "a number of seconds", [&o](double x) { o.set_time_limit_seconds(x); });
+  add_finite(plan, "--min-clearance", "DEG", "an angle in degrees", [&o](double x) { o.set_min_clearance_degrees(x); });
+  plan.add_option("--analysis-json", args.analysis_json)->type_name("OUT");
+}
+
+// The probe head and the part on it: probe mode (the planner says so when they are given
+// in another mode).
+void add_probe_options(CLI::App& plan, v1::PlanOptions& o) {
+  add_value(plan, "--head", "A0:A1:B0:B1:S", "A_MIN:A_MAX:B_MIN:B_MAX:STEP in degrees, e.g. 0:105:-180:180:7.5",
+            [&o](const std::string& v) { return parse_head(v, o.mutable_head()); });
+  add_value(plan, "--part-up", "AXIS", "an axis (+x, -y, z, ...) or a vector X,Y,Z",
+            [&o](const std::string& v) { return parse_axis(v, o.mutable_part_up()); });
+  add_finite(plan, "--cone", "DEG", "an angle in degrees", [&o](double x) { o.set_cone_degrees(x); });
 }
 
 // The planner names proto fields; the command line names its flags.
@@ -169,16 +164,7 @@ int emit(const PlanArgs& args, const v1::Plan& plan, const v1::Analysis* analysi
   return 0;
 }
 
-}  // namespace
-
-int run_plan(const std::vector<std::string>& argv) {
-  PlanArgs args;
-  for (size_t i = 0; i < argv.size(); ++i) {
-    bool mine = true;
-    if (auto exit = parse_analysis_arg(argv, i, args.analysis, &mine)) return *exit;
-    if (mine) continue;
-    if (auto exit = parse_plan_arg(argv, i, args)) return *exit;
-  }
+int run_plan(PlanArgs& args) {
   if (auto exit = check_parts(args.analysis, "plan")) return *exit;
   if (!args.analysis_json.empty() && args.analysis.parts.size() > 1) {
     return usage_error("--analysis-json writes one part's analysis: give one PART with it");
@@ -200,6 +186,17 @@ int run_plan(const std::vector<std::string>& argv) {
   if (!with_analysis) return emit(args, plan->message, nullptr);
   const v1::Analysis message = to_proto(*analysis);
   return emit(args, plan->message, &message);
+}
+
+}  // namespace
+
+Run add_plan(CLI::App& gvm) {
+  CLI::App* command = gvm.add_subcommand("plan", "the fewest setups that reach every feature, provably");
+  auto args = std::make_shared<PlanArgs>();
+  add_analysis_options(*command, args->analysis);
+  add_plan_options(*command, *args);
+  add_probe_options(*command, args->options);
+  return [args] { return run_plan(*args); };
 }
 
 }  // namespace gvm::cli

@@ -88,6 +88,19 @@ TEST(CliPlan, BadOptionsAreUsageErrorsNamingTheOption) {
   }
 }
 
+// CLI11 parses the command line: its errors name the option, values may look like options.
+TEST(CliPlan, UnknownOptionsAndMissingValuesAreUsageErrorsNamingTheOption) {
+  const std::string part = shared("data/parts/prusa_plug-aligner.stl");
+  for (const char* option : {"--frobnicate", "--mode", "--head", "--analysis-json", "--time-limit"}) {
+    const test::CliRun r = run_cli("plan " + part + " " + option);
+    EXPECT_EQ(r.status, 2) << option << ": " << r.out;
+    EXPECT_TRUE(Has(r.out, option)) << option;
+  }
+  EXPECT_EQ(run_cli("plan " + part + " --mode probe --part-up -z -q").status, 0);
+  EXPECT_EQ(run_cli("plan " + part + " --mode=rotary -q").status, 0);
+  EXPECT_EQ(run_cli("plan -h").status, 0);
+}
+
 TEST(CliPlan, BadPartsFailWithTheProblemNamedAndNothingWritten) {
   const fs::path json = test::scratch_dir() / "never.json";
   const fs::path empty = test::scratch_dir() / "empty.off";

@@ -45,6 +45,30 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   EXPECT_NE(r.out.find("--threads"), std::string::npos);
 }
 
+// CLI11 parses the command line: its own errors are usage errors naming the option too.
+TEST(Cli, UnknownOptionsAndMissingValuesAreUsageErrorsNamingTheOption) {
+  const std::string part = shared("data/parts/prusa_plug-aligner.stl");
+  for (const std::string args : {"--frobnicate", "-x", "--threads", "--json", "--threads=0", "--method=fast"}) {
+    CliRun r = run("analyze " + part + " " + args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.out;
+    const std::string option = args.substr(0, args.find('='));
+    EXPECT_NE(r.out.find(option), std::string::npos) << args << ": " << r.out;
+    EXPECT_NE(r.out.find("Run 'gvm --help' for usage."), std::string::npos) << args << ": " << r.out;
+  }
+  EXPECT_EQ(run("--frobnicate").status, 2);
+  CliRun version = run("--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out.rfind("gvm ", 0), 0u) << version.out;
+}
+
+TEST(Cli, HelpWinsWhereverItIs) {
+  for (const char* args : {"help", "-h", "analyze --help", "analyze part.stl --threads 0 -h", "help me"}) {
+    CliRun r = run(args);
+    EXPECT_EQ(r.status, 0) << args;
+    EXPECT_NE(r.out.find("Exit status:"), std::string::npos) << args;
+  }
+}
+
 TEST(Cli, MissingAndBrokenPartsAreRejectedWithTheProblemNamed) {
   CliRun missing = run("analyze /nonexistent/part.stl");
   EXPECT_EQ(missing.status, 1);
