@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
 
   const int signal = wait_for_signal(signals);
   spdlog::info("{}: draining (running requests have {} s)", signal == SIGTERM ? "SIGTERM" : "SIGINT", o.grace_seconds);
-  server->GetHealthCheckService()->SetServingStatus("gvm.v1.Accessibility", false);
+  server->GetHealthCheckService()->SetServingStatus(false);  // every service, "" included
   service.drain();
   server->Shutdown(std::chrono::system_clock::now() +
                    std::chrono::milliseconds(static_cast<int64_t>(o.grace_seconds * 1000)));
