@@ -137,6 +137,10 @@ std::optional<int> parse(CLI::App& app, int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     std::cout << e.what() << "\n";
     return 0;
+  } catch (const CLI::ArgumentMismatch& e) {
+    // CLI11 says "--threads: 1 required N missing"; a person says it like this.
+    const std::string what = e.what();
+    return gvm::cli::usage_error(what.substr(0, what.find(':')) + " needs a value");
   } catch (const CLI::ParseError& e) {
     return gvm::cli::usage_error(e.what());
   }
