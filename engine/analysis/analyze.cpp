@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <stop_token>
 
@@ -201,7 +202,23 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
 
 }  // namespace
 
+Status validate(const v1::AnalyzeOptions& options) {
+  const double angle = options.feature_angle_degrees();
+  if (!(std::isfinite(angle) && angle >= 0 && angle < 180)) {
+    return InvalidArgument("feature_angle_degrees must be an angle in degrees, 0 < DEG < 180 (0: the default), not " +
+                           std::to_string(angle));
+  }
+  if (options.threads() > 1024) {
+    return InvalidArgument("threads must be from 0 (all cores) to 1024, not " + std::to_string(options.threads()));
+  }
+  if (!v1::OcclusionMethod_IsValid(options.occlusion_method())) {
+    return InvalidArgument("occlusion_method " + std::to_string(options.occlusion_method()) + " is not a method");
+  }
+  return Status::Ok();
+}
+
 StatusOr<Analysis> analyze(const AnalyzeRequest& request) {
+  if (Status s = validate(request.options); !s.ok()) return s;
   const int threads = request.options.threads() > 0 ? static_cast<int>(request.options.threads())
                                                     : tbb::this_task_arena::max_concurrency();
   const std::shared_ptr<spdlog::logger> log =

@@ -76,10 +76,11 @@ Status in_field(const std::string& prefix, const Status& s) {
 
 // One request from arrival to its log line.
 struct AccessibilityService::Job {
-  Job(const char* method, grpc::ServerContext* context, uint64_t id)
-      : method(method), context(context), log(request_logger(id)), board(start) {}
+  Job(const char* method, const char* options_field, grpc::ServerContext* context, uint64_t id)
+      : method(method), options_field(options_field), context(context), log(request_logger(id)), board(start) {}
 
   const char* method;
+  const char* options_field;  // where the request holds its AnalyzeOptions, for messages
   grpc::ServerContext* context;
   const Clock::time_point start = Clock::now();
   std::shared_ptr<spdlog::logger> log;
@@ -113,6 +114,7 @@ AccessibilityService::AccessibilityService(Limits limits, unsigned threads)
 Status AccessibilityService::with_analysis(Job& job, const v1::Part& part, v1::AnalyzeOptions options,
                                           const ProgressSink& progress,
                                           const std::function<Status(const Analysis&)>& then) {
+  if (Status s = gvm::validate(options); !s.ok()) return in_field(job.options_field, s);
   StatusOr<PartBytes> bytes = load_part(part, limits_);
   if (!bytes.ok()) return bytes.status();
   job.name = bytes->name;
@@ -153,7 +155,7 @@ Status AccessibilityService::with_analysis(Job& job, const v1::Part& part, v1::A
 
 grpc::Status AccessibilityService::analyze(grpc::ServerContext* context, const v1::AnalyzeRequest& request,
                                            v1::AnalyzeResponse* response, const ProgressSink& progress) {
-  Job job("Analyze", context, next_id_++);
+  Job job("Analyze", "options.", context, next_id_++);
   const Status s = with_analysis(job, request.part(), request.options(), progress, [&](const Analysis& analysis) {
     *response->mutable_analysis() = to_proto(analysis);
     response->set_cached(job.cached);
@@ -164,7 +166,7 @@ grpc::Status AccessibilityService::analyze(grpc::ServerContext* context, const v
 
 grpc::Status AccessibilityService::plan(grpc::ServerContext* context, const v1::PlanRequest& request,
                                         v1::PlanResponse* response, const ProgressSink& progress) {
-  Job job("Plan", context, next_id_++);
+  Job job("Plan", "analyze_options.", context, next_id_++);
   v1::PlanOptions options = request.plan_options();
   if (Status s = planner::validate(options); !s.ok()) return job.finish(in_field("plan_options.", s));
   const Status s = with_analysis(job, request.part(), request.analyze_options(), progress, [&](const Analysis& analysis) {

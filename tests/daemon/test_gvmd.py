@@ -15,6 +15,7 @@ import unittest
 from harness import (BAD, CLIENT, GVM, GVMD, Daemon, cli_json, grpc, part_message, part_path, plan_pb2,
                      plan_request, service_pb2, without_run_facts)
 from google.protobuf import json_format
+from gvm.v1 import gvm_pb2
 
 SMALL_PARTS = ["occt_brep_Pump_Nut.off", "prusa_endstop-block.stl", "trimesh_20mm-xyz-cube.stl",
                "trimesh_plate_holes.STL", "trimesh_7_8ths_cube.stl"]
@@ -236,11 +237,17 @@ class BadRequestsNeverHurt(unittest.TestCase):
                     e = expect(lambda: stub.Plan(service_pb2.PlanRequest(part=service_pb2.Part(
                         path=part_path("../bad/trimesh_box.STL"))), timeout=30), "path out of the served directory")
                     self.assertEqual(e.code(), grpc.StatusCode.PERMISSION_DENIED)
-                elif k == 8:
+                elif k == 8 and kinds % 20 == 8:
                     e = expect(lambda: stub.Plan(service_pb2.PlanRequest(
                         part=small, plan_options=plan_pb2.PlanOptions(cone_degrees=-3)), timeout=30), "bad options")
                     self.assertEqual(e.code(), grpc.StatusCode.INVALID_ARGUMENT)
                     self.assertIn("plan_options.cone_degrees", e.details())
+                elif k == 8:
+                    options = gvm_pb2.AnalyzeOptions(feature_angle_degrees=rng.choice([-5, 180, float("nan")]))
+                    e = expect(lambda: stub.Plan(service_pb2.PlanRequest(part=small, analyze_options=options),
+                                                 timeout=30), "bad analysis options")
+                    self.assertEqual(e.code(), grpc.StatusCode.INVALID_ARGUMENT)
+                    self.assertIn("analyze_options.feature_angle_degrees", e.details())
                 else:
                     e = expect(lambda: stub.Plan(service_pb2.PlanRequest(part=service_pb2.Part(data=small.data)),
                                                  timeout=30), "no format")

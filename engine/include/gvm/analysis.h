@@ -132,6 +132,9 @@ class Analysis {
 // kInvalidArgument for an unreadable or invalid part or face groups, kNotFound for a
 // file that cannot be opened, kResourceExhausted above max_faces, kCancelled on a stop
 // request or when progress returns false.
+// Checks the options; the error names the field and the value (analyze() checks them too).
+Status validate(const v1::AnalyzeOptions& options);
+
 StatusOr<Analysis> analyze(const AnalyzeRequest& request);
 
 }  // namespace gvm
