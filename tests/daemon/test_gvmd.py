@@ -201,7 +201,10 @@ class BadRequestsNeverHurt(unittest.TestCase):
                 self.fail(what + " was accepted")
 
             kinds = 0
+            rss_warm = None
             while kinds < 1000:
+                if kinds == 500:
+                    rss_warm = daemon.rss_mib()  # every kind of request seen 50 times already
                 k = kinds % 10
                 if k == 0:
                     e = expect(lambda: raw(bytes(rng.getrandbits(8) for _ in range(rng.randint(1, 300))), timeout=30),
@@ -259,7 +262,10 @@ class BadRequestsNeverHurt(unittest.TestCase):
             self.assertEqual(without_run_facts(as_dict(ok.plan)), without_run_facts(cli_json("plan", good.part.name)))
             served = stub.Plan(service_pb2.PlanRequest(part=service_pb2.Part(path=good.part.name)), timeout=600)
             self.assertEqual(len(served.plan.setups), len(ok.plan.setups))
-            self.assertLess(daemon.rss_mib() - rss_before, 64, "memory back near where it started")
+            # No leak: the second 500 bad requests leave the memory where the first 500 left
+            # it (allocators keep what they once used, so the first ones may raise it).
+            self.assertLess(daemon.rss_mib() - rss_warm, 32, "memory grows with bad requests")
+            self.assertLess(daemon.rss_mib() - rss_before, 256, "memory back near where it started")
             self.assertIsNone(daemon.process.poll())
         finally:
             daemon.close()
