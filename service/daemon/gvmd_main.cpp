@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <filesystem>
+#include <iostream>
 #include <thread>
 
 #include "accessibility_service.h"
@@ -38,11 +39,14 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--listen", o.listen,
                  "unix:PATH (default: unix:" + gvm::daemon::default_socket_path().string() +
                      ") or tcp:127.0.0.1:PORT (only when asked: anyone on the host can connect)");
-  app.add_option("--threads", o.threads, "worker threads shared by all requests (default: all cores)");
-  app.add_option("--max-jobs", o.limits.max_jobs, "requests computing at once")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--threads", o.threads, "worker threads shared by all requests (default: all cores)")
+      ->check(CLI::Range(0u, 1024u));
+  app.add_option("--max-jobs", o.limits.max_jobs, "requests computing at once")->capture_default_str()->check(CLI::Range(1u, 1024u));
   app.add_option("--max-queue", o.limits.max_queue, "requests waiting behind them; more are refused (RESOURCE_EXHAUSTED)")
       ->capture_default_str();
-  app.add_option("--max-request-mb", o.max_request_mb, "largest part accepted, MiB")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--max-request-mb", o.max_request_mb, "largest part accepted, MiB")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 2047.0));  // gRPC's limit is an int of bytes
   app.add_option("--max-faces", o.limits.max_faces, "most input faces accepted (0: no limit)")->capture_default_str();
   app.add_option("--cache-entries", o.limits.cache_entries, "analyses kept for later requests on the same part (0: none)")
       ->capture_default_str();
@@ -51,7 +55,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--socket-mode", o.socket_mode, "the Unix socket's mode, octal")->capture_default_str();
   app.add_option("--socket-group", o.socket_group, "share the socket (and its directory) with this group");
   app.add_option("--grace", o.grace_seconds, "on SIGTERM/SIGINT, seconds running requests may take to finish")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()->check(CLI::Range(0.0, 86400.0));
   app.add_flag("-v,--verbose", o.verbose, "log details (debug level)");
   app.add_flag("-q,--quiet", o.quiet, "log only errors");
 }
@@ -89,7 +93,14 @@ int main(int argc, char** argv) {
   Options o;
   add_options(app, o);
   app.set_version_flag("--version", std::string("gvmd ") + GVM_VERSION);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "gvmd: " << e.what() << "\nRun 'gvmd --help' for usage.\n";
+    return 2;
+  }
   set_up_logging(o);
 
   unsigned mode = 0;
