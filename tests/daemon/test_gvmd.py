@@ -290,6 +290,13 @@ class SafeToRun(unittest.TestCase):
         self.assertEqual(run.returncode, 1)
         self.assertIn("only you can enter", run.stderr)
 
+    def test_bad_flags_are_usage_errors(self):
+        for flags, named in ((["--max-jobs", "0"], "--max-jobs"), (["--threads"], "--threads"),
+                             (["--listen", "foo:bar"], "--listen"), (["--socket-mode", "9z"], "--socket-mode")):
+            run = subprocess.run([GVMD, *flags], capture_output=True, text=True, timeout=60)
+            self.assertIn(run.returncode, (1, 2), flags)
+            self.assertIn(named, run.stderr, flags)
+
     def test_replaces_a_stale_socket(self):
         daemon = Daemon()
         try:
