@@ -8,18 +8,19 @@
 #include <iostream>
 #include <sstream>
 
+#include "gvm/mesh.h"
 #include "gvm/v1/service.grpc.pb.h"
 
 namespace gvm::cli {
 namespace {
 
 v1::PartFormat format_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".stl") return v1::PART_FORMAT_STL;
-  if (ext == ".off") return v1::PART_FORMAT_OFF;
-  if (ext == ".obj") return v1::PART_FORMAT_OBJ;
-  if (ext == ".ply") return v1::PART_FORMAT_PLY;
+  switch (parse_mesh_format(std::filesystem::path(path).extension().string()).value_or(MeshFormat{-1})) {
+    case MeshFormat::kStl: return v1::PART_FORMAT_STL;
+    case MeshFormat::kOff: return v1::PART_FORMAT_OFF;
+    case MeshFormat::kObj: return v1::PART_FORMAT_OBJ;
+    case MeshFormat::kPly: return v1::PART_FORMAT_PLY;
+  }
   return v1::PART_FORMAT_UNSPECIFIED;  // the daemon names the problem
 }
 
