@@ -72,6 +72,19 @@ Status in_field(const std::string& prefix, const Status& s) {
   return s.ok() ? s : Status(s.code(), prefix + s.message());
 }
 
+// A streaming method: progress events while `run` works, then the result as the last event.
+template <class Event, class Run>
+grpc::Status stream(grpc::ServerWriter<Event>* writer, Run run) {
+  Event last;
+  const grpc::Status s = run(last.mutable_result(), [writer](const v1::Progress& p) {
+    Event e;
+    *e.mutable_progress() = p;
+    writer->Write(e);
+  });
+  if (s.ok()) writer->Write(last);
+  return s;
+}
+
 }  // namespace
 
 // One request from arrival to its log line.
@@ -199,26 +212,16 @@ grpc::Status AccessibilityService::Plan(grpc::ServerContext* context, const v1::
 
 grpc::Status AccessibilityService::AnalyzeStream(grpc::ServerContext* context, const v1::AnalyzeRequest* request,
                                                  grpc::ServerWriter<v1::AnalyzeEvent>* writer) {
-  v1::AnalyzeEvent event;
-  grpc::Status s = analyze(context, *request, event.mutable_result(), [writer](const v1::Progress& p) {
-    v1::AnalyzeEvent e;
-    *e.mutable_progress() = p;
-    writer->Write(e);
+  return stream(writer, [&](v1::AnalyzeResponse* result, const ProgressSink& progress) {
+    return analyze(context, *request, result, progress);
   });
-  if (s.ok()) writer->Write(event);
-  return s;
 }
 
 grpc::Status AccessibilityService::PlanStream(grpc::ServerContext* context, const v1::PlanRequest* request,
                                               grpc::ServerWriter<v1::PlanEvent>* writer) {
-  v1::PlanEvent event;
-  grpc::Status s = plan(context, *request, event.mutable_result(), [writer](const v1::Progress& p) {
-    v1::PlanEvent e;
-    *e.mutable_progress() = p;
-    writer->Write(e);
+  return stream(writer, [&](v1::PlanResponse* result, const ProgressSink& progress) {
+    return plan(context, *request, result, progress);
   });
-  if (s.ok()) writer->Write(event);
-  return s;
 }
 
 }  // namespace gvm::daemon
