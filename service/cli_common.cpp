@@ -1,5 +1,7 @@
 #include "cli_common.h"
 
+#include "report/html_report.h"
+
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -71,6 +73,7 @@ void add_map_options(CLI::App& command, AnalysisArgs& args) {
 // Where it runs and what it prints: the same maps whatever these say.
 void add_run_options(CLI::App& command, AnalysisArgs& args) {
   command.add_option("--json", args.json)->type_name("OUT");
+  command.add_option("--report", args.report)->type_name("HTML");
   add_value(command, "--threads", "N", "a number from 1 to 1024", [&args](const std::string& v) {
     return parse_number(v, args.threads) && args.threads >= 1 && args.threads <= 1024;
   });
@@ -116,8 +119,27 @@ std::optional<int> check_parts(const AnalysisArgs& args, const char* command) {
     if (args.timeout_seconds > 0) return usage_error("--timeout is the daemon's deadline: it needs --server");
   } else if (args.parts.size() > 1 && !args.json.empty()) {
     return usage_error("--json writes one part's result: give one PART with it");
+  } else if (args.parts.size() > 1 && !args.report.empty()) {
+    return usage_error("--report draws one part: give one PART with it");
+  }
+  // A report that cannot be written is known now, not after the work.
+  if (!args.report.empty()) {
+    if (Status s = report::check_report_path(args.report); !s.ok()) return usage_error(s.message());
   }
   return std::nullopt;
+}
+
+int write_report(const AnalysisArgs& args, const SolidMesh* mesh, const v1::Analysis& analysis, const v1::Plan* plan) {
+  if (args.report.empty()) return 0;
+  std::optional<StatusOr<SolidMesh>> loaded;
+  if (!mesh) {
+    loaded.emplace(load_solid(args.parts.front()));
+    if (!loaded->ok()) return failure(loaded->status().message());
+    mesh = &loaded->value();
+  }
+  const std::string html = plan ? report::plan_report(*mesh, analysis, *plan) : report::analysis_report(*mesh, analysis);
+  if (!write_output(args.report, html)) return failure("cannot write the report to '" + args.report + "'");
+  return 0;
 }
 
 void set_log_level(const AnalysisArgs& args) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gvm/analysis.h"
+#include "gvm/v1/plan.pb.h"
 
 // CLI11 stays out of this header: remote_client.cpp includes it too.
 namespace CLI {
@@ -39,6 +40,7 @@ struct AnalysisArgs {
   double timeout_seconds = 0;        // --timeout: the daemon's deadline (0: none)
   std::string groups;
   std::string json;                  // the command's main JSON output
+  std::string report;                // --report FILE: the HTML report
   std::optional<double> feature_angle;
   unsigned threads = 0;
   bool lvm_only = false;
@@ -64,6 +66,11 @@ AnalyzeRequest analyze_request(const AnalysisArgs& args);
 // parts need --server; --json then needs one part).
 std::optional<int> check_parts(const AnalysisArgs& args, const char* command);
 void set_log_level(const AnalysisArgs& args);
+
+// Writes args.report, if asked: the report of `plan` when set, else of the analysis.
+// `mesh` is the analysis's own, or null for a result from a daemon: then the part file is
+// read and validated here. Returns 0, or the exit status of a failure it printed.
+int write_report(const AnalysisArgs& args, const SolidMesh* mesh, const v1::Analysis& analysis, const v1::Plan* plan);
 
 // "gvm: message" to stderr; returns 1.
 int failure(const std::string& message);

@@ -153,14 +153,19 @@ planner::PlanControl progress_log() {
   return control;
 }
 
-// The JSON files and the report, the same whether the plan was made here or on a daemon.
-int emit(const PlanArgs& args, const v1::Plan& plan, const v1::Analysis* analysis) {
+// The JSON files and the reports, the same whether the plan was made here or on a daemon
+// (then `mesh` is null).
+int emit(const PlanArgs& args, const v1::Plan& plan, const v1::Analysis* analysis, const SolidMesh* mesh) {
   const std::string& json = args.analysis.json;
   if (!json.empty() && !write_output(json, to_json(plan))) return failure("cannot write JSON to '" + json + "'");
-  if (analysis && !write_output(args.analysis_json, to_json(*analysis))) {
+  if (!args.analysis_json.empty() && !write_output(args.analysis_json, to_json(*analysis))) {
     return failure("cannot write the analysis JSON to '" + args.analysis_json + "'");
   }
-  if (!args.analysis.quiet && json != "-" && args.analysis_json != "-") print_plan(plan, std::cout);
+  if (analysis) {
+    if (int exit = write_report(args.analysis, mesh, *analysis, &plan)) return exit;
+  }
+  const bool stdout_taken = json == "-" || args.analysis_json == "-" || args.analysis.report == "-";
+  if (!args.analysis.quiet && !stdout_taken) print_plan(plan, std::cout);
   return 0;
 }
 
@@ -172,10 +177,11 @@ int run_plan(PlanArgs& args) {
   args.options.set_threads(args.analysis.threads);
   if (Status s = planner::validate(args.options); !s.ok()) return usage_error(with_flag_names(s.message()));
   set_log_level(args.analysis);
-  const bool with_analysis = !args.analysis_json.empty();
+  // The report draws the maps: it needs the analysis as well.
+  const bool with_analysis = !args.analysis_json.empty() || !args.analysis.report.empty();
   if (!args.analysis.server.empty()) {
     return remote_plan(args.analysis, args.options, with_analysis, [&](const std::string&, const v1::PlanResponse& r) {
-      return emit(args, r.plan(), with_analysis ? &r.analysis() : nullptr);
+      return emit(args, r.plan(), with_analysis ? &r.analysis() : nullptr, nullptr);
     });
   }
 
@@ -183,9 +189,9 @@ int run_plan(PlanArgs& args) {
   if (!analysis.ok()) return failure(analysis.status().message());
   auto plan = planner::plan(*analysis, args.options, progress_log());
   if (!plan.ok()) return failure(plan.status().message());
-  if (!with_analysis) return emit(args, plan->message, nullptr);
+  if (!with_analysis) return emit(args, plan->message, nullptr, nullptr);
   const v1::Analysis message = to_proto(*analysis);
-  return emit(args, plan->message, &message);
+  return emit(args, plan->message, &message, &analysis->mesh());
 }
 
 }  // namespace

@@ -101,6 +101,8 @@ struct AnalysisTiming {
 class Analysis {
  public:
   const PartSummary& part() const;
+  // The validated solid the maps were computed on (input face numbering), e.g. to draw it.
+  const SolidMesh& mesh() const;
   const std::vector<Surface>& regions() const;
   const std::vector<Surface>& features() const;
   const AnalysisTiming& timing() const;

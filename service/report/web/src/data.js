@@ -1,0 +1,49 @@
+// The report's data: the JSON block the C++ writer embeds (protobuf JSON of the Analysis
+// and the Plan, the colour classes) and the part's triangles as typed arrays, each
+// zlib-compressed and base64.
+
+async function inflate(text) {
+  const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
+  return new Response(stream).arrayBuffer();
+}
+
+export async function readReportData() {
+  const data = JSON.parse(document.getElementById("gvm-report-data").textContent);
+  const m = data.mesh;
+  const [positions, triangles, triangleFace, faceClass, faceSurface] = await Promise.all(
+    [m.positions, m.triangles, m.triangleFace, m.faceClass, m.faceSurface].map(inflate));
+  data.mesh = {
+    positions: new Float32Array(positions),
+    triangles: new Uint32Array(triangles),
+    triangleFace: new Uint32Array(triangleFace),
+    faceClass: new Int32Array(faceClass),
+    faceSurface: new Int32Array(faceSurface),
+  };
+  return data;
+}
+
+// The surfaces the report is about: the planned ones (features or regions), or the
+// analysis's features.
+export function surfacesOf(data) {
+  const a = data.analysis;
+  const regions = data.plan && data.plan.surfacesKind === "PLAN_SURFACES_REGIONS";
+  return (regions ? a.regions : a.features) || [];
+}
+
+// Which setup reaches each surface (-1: none, whole).
+export function setupOfSurface(data) {
+  const out = new Map();
+  for (const s of (data.plan && data.plan.surfaces) || []) out.set(s.id || 0, s.setup ?? 0);
+  return out;
+}
+
+export function isEmptyImage(image) {
+  if (!image) return true;
+  return !image.fullSphere && (image.dimension ?? 0) < 0;
+}
+
+// The map drawn for a surface: its GVM, or its LVM when the GVM was not computed.
+export function mapOf(surface) {
+  return surface.gvm || null;
+}

@@ -1,0 +1,135 @@
+// The report's tables, built from the protobuf JSON of the Analysis and the Plan.
+
+export function h(tag, attrs = {}, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (k === "onclick") e.addEventListener("click", v);
+    else if (k === "style") e.style.cssText = v;
+    else e.setAttribute(k, v);
+  }
+  for (const c of children.flat()) e.append(c instanceof Node ? c : document.createTextNode(String(c)));
+  return e;
+}
+
+export function table(headers, rows, attrs = {}) {
+  return h("table", attrs, h("thead", {}, h("tr", {}, headers.map((x) => h("th", {}, x)))),
+    h("tbody", {}, rows));
+}
+
+export function num(x, digits = 2) {
+  return (x || 0).toFixed(digits).replace(/\.?0+$/, "") || "0";
+}
+
+export function direction(v) {
+  return v ? `(${num(v.x, 4)}, ${num(v.y, 4)}, ${num(v.z, 4)})` : "";
+}
+
+export function swatch(color) {
+  return h("span", { class: "swatch", style: `background:${color}` });
+}
+
+const kReasons = {
+  UNREACHABLE_REASON_SELF_OCCLUDED: "undercut by its own shape or its neighbours (LVM empty)",
+  UNREACHABLE_REASON_OCCLUDED: "occluded by the rest of the part",
+  UNREACHABLE_REASON_VOID: "faces an internal void",
+  UNREACHABLE_REASON_NOT_ALONG_NORMAL: "not reachable along its own normal",
+  UNREACHABLE_REASON_NO_HEAD_ORIENTATION: "no probe head orientation fits",
+  UNREACHABLE_REASON_GVM_NOT_COMPUTED: "GVM not computed (--lvm-only)",
+  UNREACHABLE_REASON_NO_CLEARANCE: "no direction with the required clearance",
+};
+
+export function reasonText(reason) {
+  return kReasons[reason] || String(reason || "").toLowerCase();
+}
+
+function names(ids, nameOf, limit = 12) {
+  const list = ids.map(nameOf);
+  return list.length > limit ? `${list.slice(0, limit).join(", ")} … and ${list.length - limit} more` : list.join(", ");
+}
+
+// The setups, each row selecting its setup when clicked.
+export function setupTable(plan, colorOfSetup, nameOf, onSelect) {
+  const probe = plan.mode === "PLAN_MODE_PROBE", rotary = plan.mode === "PLAN_MODE_ROTARY";
+  const headers = ["#", "", rotary ? "rotary axis" : "direction u (tool along −u)"];
+  if (probe) headers.push("head A°", "head B°");
+  if (rotary) headers.push("tool direction at 0°");
+  headers.push("clearance°", "surfaces");
+  const rows = (plan.setups || []).map((s, i) => {
+    const surfaces = [...(s.features || []), ...(s.reach || []).filter((r) => (r.faces || []).length).map((r) => r.feature || 0)];
+    const cells = [i + 1, swatch(colorOfSetup(i)), direction(s.direction)];
+    if (probe) cells.push(num(s.headADegrees), num(s.headBDegrees));
+    if (rotary) cells.push(direction(s.rotaryZero));
+    cells.push(s.exactAlignment ? "0 (exact alignment)" : num(s.clearanceDegrees, 1),
+      `${surfaces.length}: ${names(surfaces, nameOf)}`);
+    return h("tr", { class: "setup-row", "data-setup": i, onclick: () => onSelect(i) }, cells.map((c) => h("td", {}, c)));
+  });
+  return table(headers, rows, { class: "setups" });
+}
+
+export function unreachableTable(plan, nameOf) {
+  const rows = (plan.unreachable || []).map((u) => h("tr", {},
+    h("td", {}, nameOf(u.feature || 0)), h("td", {}, reasonText(u.reason)), h("td", {}, u.detail || ""),
+    h("td", {}, names(u.blockingFeatures || [], nameOf))));
+  return table(["surface", "reason", "detail", "blocked by"], rows, { class: "unreachable" });
+}
+
+export function proofTable(plan, nameOf) {
+  const s = plan.solver || {};
+  const n = (plan.setups || []).length;
+  const rows = [
+    ["setups", n],
+    ["lower bound", `${plan.lowerBound || 0} — ${plan.optimal ? "optimal: no plan has fewer setups" : "not proven optimal"}`],
+    ["lower-bound witness", `${(plan.lowerBoundWitness || []).length} surfaces no two of which share a direction: ${names(plan.lowerBoundWitness || [], nameOf)}`],
+    ["solver", s.solver || ""],
+    ["candidate set", `${s.candidateSet || ""} (${s.candidates || 0} candidates, ${s.maximalCandidates || 0} inclusion-maximal)`],
+    ["bounds", `greedy ${s.greedySetups || 0}, packing ${s.packingBound || 0}, LP ${num(s.lpBound, 3)}, nodes ${s.nodes || 0}`],
+  ];
+  if (s.continuousLowerBound) rows.push(["continuous lower bound", s.continuousLowerBound]);
+  if (s.timeLimitReached) rows.push(["time limit", "reached: the best cover found is shown with its gap"]);
+  return keyValue(rows, "proof");
+}
+
+export function keyValue(rows, cls) {
+  return h("table", { class: `kv ${cls}` }, h("tbody", {}, rows.map(([k, v]) => h("tr", {}, h("th", {}, k), h("td", {}, v)))));
+}
+
+export function partTable(part) {
+  const b = part.boundingBox || {};
+  return keyValue([
+    ["source", part.source || ""],
+    ["faces / vertices / triangles", `${part.inputFaces || 0} / ${part.inputVertices || 0} / ${part.triangles || 0}`],
+    ["shells (voids)", `${part.shells || 0} (${part.voidShells || 0})`],
+    ["hull faces", part.hullFaces || 0],
+    ["bounding box", `${direction(b.min)} – ${direction(b.max)}`],
+    ["validation", part.validation || ""],
+  ], "part");
+}
+
+export function timingTable(analysis, plan) {
+  const t = analysis.timing || {};
+  const rows = [["analysis", `${num(t.totalSeconds, 3)} s (read ${num(t.readSeconds, 3)}, validate ${num(t.validateSeconds, 3)}, part ${num(t.partSeconds, 3)}, maps ${num(t.visibilitySeconds, 3)}) on ${t.threads || 0} threads`]];
+  if (plan && plan.timing) {
+    const p = plan.timing;
+    rows.push(["planning", `${num(p.totalSeconds, 3)} s (candidates ${num(p.candidatesSeconds, 3)}, cover ${num(p.coverSeconds, 3)}, placement ${num(p.placementSeconds, 3)}, unreachable ${num(p.unreachableSeconds, 3)})`]);
+  }
+  rows.push(["engine", analysis.engineVersion || ""]);
+  return keyValue(rows, "timing");
+}
+
+// Every surface with its map, for the analysis report (and as details of a plan).
+export function surfaceTable(surfaces, regions, colorOf, setupOf, onSelect) {
+  const rows = surfaces.map((s) => {
+    const info = s.info || {};
+    const image = s.gvm || s.lvm || {};
+    const setup = setupOf ? setupOf(s) : "";
+    return h("tr", { class: "surface-row", "data-surface": s.id || 0, onclick: () => onSelect(s.id || 0) },
+      h("td", {}, s.id || 0), h("td", {}, swatch(colorOf(s)), " ", s.name || ""), h("td", {}, (s.faces || []).length),
+      h("td", {}, regions ? "concave region" : s.onHull ? "hull" : `region ${s.region || 0}`),
+      h("td", {}, (s.gvm ? "" : "LVM only: ") + (image.description || "")),
+      h("td", {}, num(image.area, 4)), h("td", {}, info.neighborOccluders || 0), h("td", {}, info.potentialOccluders || 0),
+      h("td", {}, num(info.seconds, 3)), setupOf ? h("td", {}, setup) : "");
+  });
+  const headers = ["id", "name", "faces", "where", "GVM", "area sr", "|N_S|", "|O_S|", "s"];
+  if (setupOf) headers.push("setup");
+  return table(headers, rows, { class: "surfaces" });
+}
