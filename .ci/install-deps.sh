@@ -10,7 +10,12 @@ packages=(
   coinor-libcbc-dev
   libgrpc++-dev protobuf-compiler-grpc grpc-proto libssl-dev libcli11-dev
   python3-grpcio python3-protobuf
+  zlib1g-dev chromium
 )
+# Node.js and npm build the HTML report's script (service/report/web); machines that
+# already have them (from NodeSource, say) keep theirs.
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

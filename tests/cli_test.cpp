@@ -154,3 +154,40 @@ TEST(Cli, SameJsonWithOneAndTwoThreads) {
 }
 
 }  // namespace
+
+namespace {
+
+// A report that cannot be written is refused before the part is even read: the missing
+// part is not what the message is about.
+TEST(Cli, AnUnwritableReportIsRefusedBeforeAnyWork) {
+  for (const char* command : {"analyze", "plan"}) {
+    CliRun r = run(std::string(command) + " /nonexistent/part.stl --report /nonexistent-dir/r.html");
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(r.out.find("/nonexistent-dir"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("part.stl"), std::string::npos) << r.out;
+  }
+  const fs::path& dir = gvm::test::scratch_dir();
+  CliRun into_dir = run("plan " + shared("data/parts/prusa_plug-aligner.stl") + " --report " + dir.string());
+  EXPECT_EQ(into_dir.status, 2);
+  EXPECT_NE(into_dir.out.find("is a directory"), std::string::npos) << into_dir.out;
+  CliRun several = run("plan a.stl b.stl --server unix:/nonexistent.sock --report " + (dir / "r.html").string());
+  EXPECT_EQ(several.status, 2);
+  EXPECT_NE(several.out.find("--report"), std::string::npos) << several.out;
+}
+
+TEST(Cli, ReportsAreWrittenForPlansAndAnalyses) {
+  const fs::path& dir = gvm::test::scratch_dir();
+  for (const char* command : {"analyze", "plan"}) {
+    const fs::path html = dir / (std::string(command) + ".html");
+    CliRun r = run(std::string(command) + " " + shared("data/parts/prusa_plug-aligner.stl") + " -q --report " +
+                   html.string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    const std::string text = read_file(html);
+    EXPECT_EQ(text.rfind("<!DOCTYPE html>", 0), 0u);
+    EXPECT_NE(text.find("id=\"gvm-report-data\""), std::string::npos);
+    EXPECT_NE(text.find("<figure class=\"snapshot\""), std::string::npos);
+    EXPECT_EQ(text.find("\"plan\":") != std::string::npos, std::string(command) == "plan");
+  }
+}
+
+}  // namespace

@@ -8,6 +8,7 @@ import signal
 import stat
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 import unittest
@@ -21,6 +22,14 @@ SMALL_PARTS = ["occt_brep_Pump_Nut.off", "prusa_endstop-block.stl", "trimesh_20m
                "trimesh_plate_holes.STL", "trimesh_7_8ths_cube.stl"]
 # Hundreds of surfaces and several seconds in single surfaces: long enough to cancel midway.
 LONG_PART = "occt_TR12J_OCC.stl"
+
+
+def report_data(html_path):
+    """The data block of an HTML report, as a dict."""
+    with open(html_path, encoding="utf-8") as f:
+        html = f.read()
+    start = html.index('id="gvm-report-data">') + len('id="gvm-report-data">')
+    return json.loads(html[start:html.index("</script>", start)])
 
 
 def as_dict(message):
@@ -58,6 +67,15 @@ class ResultsEqualTheCommandLine(unittest.TestCase):
         strip = lambda text: [l for l in text.splitlines() if not l.startswith("Timing:")]
         self.assertEqual(strip(remote.stdout), strip(local.stdout))
         self.assertIn("Optimality:", remote.stdout)
+
+    def test_report_from_the_daemon_equals_the_local_report(self):
+        """`gvm plan --server --report`: the daemon's plan and analysis, the part drawn here."""
+        path = part_path(SMALL_PARTS[3])
+        with tempfile.TemporaryDirectory() as tmp:
+            local, remote = os.path.join(tmp, "local.html"), os.path.join(tmp, "remote.html")
+            subprocess.run([GVM, "plan", path, "--report", local, "-q"], check=True)
+            subprocess.run([GVM, "plan", path, "--report", remote, "-q", "--server", self.daemon.address], check=True)
+            self.assertEqual(without_run_facts(report_data(remote)), without_run_facts(report_data(local)))
 
     def test_cpp_client_several_parts_and_a_failure(self):
         paths = [part_path(n) for n in SMALL_PARTS[:2]] + [os.path.join(BAD, "trimesh_box.STL")]
