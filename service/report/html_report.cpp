@@ -51,7 +51,8 @@ std::string classes_json(const FaceClasses& classes) {
   std::string out = "[";
   for (const FaceClass& c : classes.classes) {
     if (out.size() > 1) out += ",";
-    out += "{\"label\":" + json_string(c.label) + ",\"color\":" + json_string(c.color);
+    out += "{\"label\":" + json_string(c.label) + ",\"color\":" + json_string(c.color) +
+           ",\"faded\":" + json_string(faded(c.color));
     if (c.setup) out += ",\"setup\":" + std::to_string(*c.setup);
     out += "}";
   }

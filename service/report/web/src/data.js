@@ -42,8 +42,3 @@ export function isEmptyImage(image) {
   if (!image) return true;
   return !image.fullSphere && (image.dimension ?? 0) < 0;
 }
-
-// The map drawn for a surface: its GVM, or its LVM when the GVM was not computed.
-export function mapOf(surface) {
-  return surface.gvm || null;
-}

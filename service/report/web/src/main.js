@@ -34,7 +34,8 @@ function selectSetup(i) {
   sphere.highlight(sel);
   sphere.highlightSetup(i);
   for (const row of document.querySelectorAll(".setup-row")) row.classList.toggle("selected", Number(row.dataset.setup) === i);
-  if (i !== null) part?.viewAlong([plan.setups[i].direction.x || 0, plan.setups[i].direction.y || 0, plan.setups[i].direction.z || 0]);
+  const d = i === null ? null : plan.setups[i].direction || {};
+  if (d) part?.viewAlong([d.x || 0, d.y || 0, d.z || 0]);
   showInfo(i === null ? "" : setupInfo(i));
 }
 

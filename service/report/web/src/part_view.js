@@ -18,11 +18,6 @@ function hexToRgb(hex) {
   return [((v >> 16) & 255) / 255, ((v >> 8) & 255) / 255, (v & 255) / 255];
 }
 
-// A copy of the class colour, faded towards white when not highlighted.
-function faded(rgb) {
-  return rgb.map((c) => 0.78 + 0.22 * c);
-}
-
 // Edges between triangles of different surfaces (or classes): the features' outlines.
 function borderEdges(mesh) {
   const { triangles, triangleFace, faceSurface, positions } = mesh;
@@ -123,14 +118,14 @@ export class PartView {
   highlight(selectedClasses, selectedSurface = null) {
     const colors = this.geometry.getAttribute("color");
     const classes = this.data.classes.map((c) => hexToRgb(c.color));
+    const faded = this.data.classes.map((c) => hexToRgb(c.faded));
     const { triangleFace, faceClass, faceSurface } = this.mesh;
     for (let t = 0; t < triangleFace.length; ++t) {
       const face = triangleFace[t];
       const cls = faceClass[face];
-      let rgb = classes[cls];
       const on = (!selectedClasses || selectedClasses.has(cls)) &&
         (selectedSurface === null || faceSurface[face] === selectedSurface);
-      if (!on) rgb = faded(rgb);
+      const rgb = on ? classes[cls] : faded[cls];
       for (let k = 0; k < 3; ++k) colors.setXYZ(3 * t + k, rgb[0], rgb[1], rgb[2]);
     }
     colors.needsUpdate = true;

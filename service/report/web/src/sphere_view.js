@@ -4,7 +4,7 @@
 // thick lines, points as dots -- the low-dimensional ones are through holes and slots and
 // must stay visible. d3-geo clips the spherical polygons and arcs at the hemisphere edge.
 import { geoAzimuthalEqualArea, geoPath, geoGraticule } from "d3-geo";
-import { isEmptyImage, mapOf } from "./data.js";
+import { isEmptyImage } from "./data.js";
 
 const SVG = "http://www.w3.org/2000/svg";
 const kScale = 100;                 // projection scale: the hemisphere edge is at kScale*sqrt(2)
@@ -90,7 +90,7 @@ export class SphereView {
   // One group per hemisphere for a surface whose map is not empty, all with the same
   // data-surface (the biggest maps first, so small ones stay on top).
   drawSurface(surface, color, onSelect) {
-    const image = mapOf(surface);
+    const image = surface.gvm;   // unset when not computed (--lvm-only): nothing to draw
     if (isEmptyImage(image)) return;
     const id = surface.id || 0;
     const list = [];
