@@ -11,6 +11,7 @@ packages=(
   libgrpc++-dev protobuf-compiler-grpc grpc-proto libssl-dev libcli11-dev
   python3-grpcio python3-protobuf
   zlib1g-dev chromium
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
 )
 # Node.js and npm build the HTML report's script (service/report/web); machines that
 # already have them (from NodeSource, say) keep theirs.

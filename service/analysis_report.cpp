@@ -42,9 +42,18 @@ void print_surface(const Msg& m, const std::string& label, std::ostream& out) {
 
 }  // namespace
 
+std::string step_line(const v1::PartSummary& part) {
+  if (part.cad_faces() == 0) return "";
+  std::ostringstream line;
+  line << "  STEP: " << part.cad_faces() << " B-rep faces, file unit " << part.file_unit()
+       << " (coordinates in mm), tessellated at " << part.linear_deflection() << " mm and "
+       << part.angular_deflection_degrees() << " deg\n";
+  return line.str();
+}
+
 void print_report(const v1::Analysis& a, std::ostream& out) {
   const v1::PartSummary& p = a.part();
-  out << "Part " << p.source() << "\n"
+  out << "Part " << p.source() << "\n" << step_line(p)
       << "  " << p.input_faces() << " faces (" << p.triangles() << " triangles), "
       << p.input_vertices() << " vertices, " << p.shells() << " shell(s)";
   if (p.void_shells() > 0) out << " of which " << p.void_shells() << " internal void(s)";

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -51,6 +52,34 @@ CLI::Option* add_value(CLI::App& command, const std::string& name, const std::st
 
 namespace {
 
+// How a STEP part becomes a mesh and its features (ignored for meshes).
+void add_step_options(CLI::App& command, v1::StepOptions& step) {
+  add_value(command, "--solid", "N", "a solid's number, from 0", [&step](const std::string& v) {
+    uint32_t n = 0;
+    if (!parse_number(v, n)) return false;
+    step.set_solid(n);
+    return true;
+  });
+  add_value(command, "--deflection", "MM", "a length in mm > 0 (STEP tessellation)", [&step](const std::string& v) {
+    double mm = 0;
+    if (!parse_number(v, mm) || !(mm > 0 && std::isfinite(mm))) return false;
+    step.set_linear_deflection(mm);
+    return true;
+  });
+  add_value(command, "--angle", "DEG", "an angle in degrees, 0 < DEG < 90 (STEP tessellation)",
+            [&step](const std::string& v) {
+              double deg = 0;
+              if (!parse_number(v, deg) || !(deg > 0 && deg < 90)) return false;
+              step.set_angular_deflection_degrees(deg);
+              return true;
+            });
+  add_value(command, "--features", "F", "brep or auto", [&step](const std::string& v) {
+    if (v != "brep" && v != "auto") return false;
+    step.set_features(v == "brep" ? v1::STEP_FEATURES_BREP : v1::STEP_FEATURES_AUTO);
+    return true;
+  });
+}
+
 // What to analyse and how: the options that change the maps.
 void add_map_options(CLI::App& command, AnalysisArgs& args) {
   command.add_option("PART", args.parts, "mesh file(s); several with --server")->type_name("PART");
@@ -66,6 +95,7 @@ void add_map_options(CLI::App& command, AnalysisArgs& args) {
     return args.convex || v == "eme";
   });
   command.add_flag("--lvm-only", args.lvm_only);
+  add_step_options(command, args.step);
   // The default since 0.2; still accepted so that existing scripts keep working.
   command.add_flag("--global-occlusion")->group("");
 }
@@ -106,6 +136,7 @@ AnalyzeRequest analyze_request(const AnalysisArgs& args) {
     request.options.set_occlusion_method(v1::OCCLUSION_METHOD_CONVEX_DECOMPOSITION);
   }
   if (args.feature_angle) request.options.set_feature_angle_degrees(*args.feature_angle);
+  *request.options.mutable_step() = args.step;
   return request;
 }
 
@@ -133,7 +164,7 @@ int write_report(const AnalysisArgs& args, const SolidMesh* mesh, const v1::Anal
   if (args.report.empty()) return 0;
   std::optional<StatusOr<SolidMesh>> loaded;
   if (!mesh) {
-    loaded.emplace(load_solid(args.parts.front()));
+    loaded.emplace(load_part_solid(analyze_request(args)));
     if (!loaded->ok()) return failure(loaded->status().message());
     mesh = &loaded->value();
   }

@@ -44,6 +44,7 @@ struct AnalysisArgs {
   std::optional<double> feature_angle;
   unsigned threads = 0;
   bool lvm_only = false;
+  v1::StepOptions step;              // STEP parts: --solid, --deflection, --angle, --features
   bool convex = false;
   bool verbose = false;
   bool quiet = false;

@@ -1,5 +1,7 @@
 #include "plan_report.h"
 
+#include "analysis_report.h"
+
 #include <cstdio>
 #include <map>
 #include <string>
@@ -151,7 +153,7 @@ void print_plan(const v1::Plan& p, std::ostream& out) {
   const bool regions = p.surfaces_kind() == v1::PLAN_SURFACES_REGIONS;
   out << "Part " << part.source() << ": " << part.input_faces() << " faces (" << part.triangles()
       << " triangles)\n"
-      << "Mode: " << mode_text(p.mode()) << "\n"
+      << step_line(part) << "Mode: " << mode_text(p.mode()) << "\n"
       << "Planned: " << p.surfaces_size() << (regions ? " concave regions" : p.options().concave_only() ? " concave features" : " features (hull features too)")
       << (p.options().planar_normal() ? ", planar ones along their normal only" : "") << "; "
       << p.reached() << " reached, " << p.unreachable_count() << " unreachable\n"

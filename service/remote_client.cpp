@@ -20,6 +20,7 @@ v1::PartFormat format_of(const std::string& path) {
     case MeshFormat::kOff: return v1::PART_FORMAT_OFF;
     case MeshFormat::kObj: return v1::PART_FORMAT_OBJ;
     case MeshFormat::kPly: return v1::PART_FORMAT_PLY;
+    case MeshFormat::kStep: return v1::PART_FORMAT_STEP;
   }
   return v1::PART_FORMAT_UNSPECIFIED;  // the daemon names the problem
 }

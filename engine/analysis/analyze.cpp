@@ -28,7 +28,11 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-PartSummary summarize(const RawMesh& raw, const Part& part) {
+std::string part_name(const AnalyzeRequest& request) {
+  return request.part_name.empty() ? std::string("part") : request.part_name;
+}
+
+PartSummary summarize(const RawMesh& raw, const Part& part, const std::optional<StepPart>& step) {
   const SolidMesh& mesh = part.mesh();
   PartSummary out;
   out.source = mesh.source;
@@ -50,7 +54,22 @@ PartSummary summarize(const RawMesh& raw, const Part& part) {
   }
   out.box_min = lo;
   out.box_max = hi;
+  if (step) {
+    out.file_unit = step->file_unit;
+    out.cad_faces = static_cast<uint32_t>(step->cad_faces.size());
+    out.linear_deflection = step->linear_deflection;
+    out.angular_deflection_degrees = step->angular_deflection_degrees;
+  }
   return out;
+}
+
+// The B-rep face a feature is, when all its faces come from one.
+std::optional<CadFace> cad_face_of(const Surface& feature, const StepPart& step) {
+  const uint32_t first = step.face_cad[feature.faces.front()];
+  for (uint32_t f : feature.faces) {
+    if (step.face_cad[f] != first) return std::nullopt;
+  }
+  return step.cad_faces[first];
 }
 
 // Throttled progress: the callback sees every surface, the log one line per second. A
@@ -82,13 +101,43 @@ class Progress {
   std::atomic<Clock::time_point> last_log_{};
 };
 
-StatusOr<Part> read_part(const AnalyzeRequest& request, RawMesh& raw, AnalysisTiming& timing) {
+bool is_step(const AnalyzeRequest& request) {
+  if (request.part_bytes) return request.part_format == MeshFormat::kStep;
+  const size_t dot = request.part_path.rfind('.');
+  return dot != std::string::npos && parse_mesh_format(request.part_path.substr(dot)) == MeshFormat::kStep;
+}
+
+StepOptions step_options(const v1::StepOptions& o) {
+  StepOptions out;
+  out.linear_deflection = o.linear_deflection();
+  if (o.angular_deflection_degrees() > 0) out.angular_deflection_degrees = o.angular_deflection_degrees();
+  if (o.has_solid()) out.solid = static_cast<int>(o.solid());
+  return out;
+}
+
+// A STEP part: tessellated and welded by topology; its B-rep faces become the features
+// unless the request asks for the mesh-based ones (or gives its own groups).
+StatusOr<RawMesh> read_step_part(const AnalyzeRequest& request, std::optional<StepPart>& step) {
+  const StepOptions options = step_options(request.options.step());
+  StatusOr<StepPart> read =
+      request.part_bytes ? read_step(*request.part_bytes, options, part_name(request)) : read_step(request.part_path, options);
+  if (!read.ok()) return read.status();
+  step.emplace(std::move(*read));
+  RawMesh raw = step->mesh;
+  if (request.options.step().features() != v1::STEP_FEATURES_AUTO) raw.groups = brep_face_groups(*step);
+  return raw;
+}
+
+StatusOr<RawMesh> read_input(const AnalyzeRequest& request, std::optional<StepPart>& step) {
+  if (is_step(request)) return read_step_part(request, step);
+  return request.part_bytes ? read_raw_mesh(*request.part_bytes, request.part_format, part_name(request))
+                            : read_raw_mesh(request.part_path);
+}
+
+StatusOr<Part> read_part(const AnalyzeRequest& request, RawMesh& raw, std::optional<StepPart>& step,
+                         AnalysisTiming& timing) {
   auto t0 = Clock::now();
-  StatusOr<RawMesh> read =
-      request.part_bytes
-          ? read_raw_mesh(*request.part_bytes, request.part_format,
-                          request.part_name.empty() ? std::string("part") : request.part_name)
-          : read_raw_mesh(request.part_path);
+  StatusOr<RawMesh> read = read_input(request, step);
   if (!read.ok()) return read.status();
   raw = std::move(*read);
   timing.read = seconds_since(t0);
@@ -160,14 +209,18 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
   const auto t_start = Clock::now();
   AnalysisTiming timing;
   RawMesh raw;
-  StatusOr<Part> part = read_part(request, raw, timing);
+  std::optional<StepPart> step;
+  StatusOr<Part> part = read_part(request, raw, step, timing);
   if (!part.ok()) return part.status();
   auto impl = std::make_shared<Analysis::Impl>(std::move(*part));
   impl->options = request.options;
-  impl->summary = summarize(raw, impl->part);
+  impl->summary = summarize(raw, impl->part, step);
 
   std::vector<std::span<const uint32_t>> triangles;
   std::vector<Surface> surfaces = surfaces_of(impl->part, triangles);
+  for (Surface& s : surfaces) {
+    if (step && s.kind == Surface::Kind::kFeature) s.cad_face = cad_face_of(s, *step);
+  }
   const auto t0 = Clock::now();
   timing.threads = static_cast<uint32_t>(threads);
   const OcclusionMethod method = method_of(request.options);
@@ -214,7 +267,28 @@ Status validate(const v1::AnalyzeOptions& options) {
   if (!v1::OcclusionMethod_IsValid(options.occlusion_method())) {
     return InvalidArgument("occlusion_method " + std::to_string(options.occlusion_method()) + " is not a method");
   }
+  const v1::StepOptions& step = options.step();
+  if (!(std::isfinite(step.linear_deflection()) && step.linear_deflection() >= 0)) {
+    return InvalidArgument("step.linear_deflection must be a length in mm > 0 (0: the default), not " +
+                           std::to_string(step.linear_deflection()));
+  }
+  const double deflection_angle = step.angular_deflection_degrees();
+  if (!(std::isfinite(deflection_angle) && deflection_angle >= 0 && deflection_angle < 90)) {
+    return InvalidArgument("step.angular_deflection_degrees must be an angle in degrees, 0 < DEG < 90 (0: the default), not " +
+                           std::to_string(deflection_angle));
+  }
+  if (!v1::StepFeatures_IsValid(step.features())) {
+    return InvalidArgument("step.features " + std::to_string(step.features()) + " is not brep or auto");
+  }
   return Status::Ok();
+}
+
+StatusOr<SolidMesh> load_part_solid(const AnalyzeRequest& request) {
+  if (Status s = validate(request.options); !s.ok()) return s;
+  std::optional<StepPart> step;
+  StatusOr<RawMesh> raw = read_input(request, step);
+  if (!raw.ok()) return raw.status();
+  return build_solid(*raw);
 }
 
 StatusOr<Analysis> analyze(const AnalyzeRequest& request) {

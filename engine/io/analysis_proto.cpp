@@ -57,9 +57,21 @@ void to_proto(const PartSummary& p, v1::PartSummary* out) {
   set(out->mutable_bounding_box()->mutable_min(), p.box_min);
   set(out->mutable_bounding_box()->mutable_max(), p.box_max);
   out->set_validation("valid");
+  out->set_file_unit(p.file_unit);
+  out->set_cad_faces(p.cad_faces);
+  out->set_linear_deflection(p.linear_deflection);
+  out->set_angular_deflection_degrees(p.angular_deflection_degrees);
 }
 
 namespace {
+
+void fill_cad_face(const CadFace& f, v1::CadFace* out) {
+  out->set_index(f.index);
+  out->set_surface_type(std::string(name_of(f.type)));
+  if (f.axis) set(out->mutable_axis(), {(*f.axis)[0], (*f.axis)[1], (*f.axis)[2]});
+  if (f.location) set(out->mutable_location(), {(*f.location)[0], (*f.location)[1], (*f.location)[2]});
+  out->set_radius(f.radius);
+}
 
 void fill_timing(const AnalysisTiming& t, v1::Timing* out) {
   out->set_read_seconds(t.read);
@@ -107,6 +119,7 @@ v1::Analysis to_proto(const Analysis& analysis) {
     msg->set_name(f.name);
     msg->set_on_hull(f.on_hull);
     msg->set_region(f.region);
+    if (f.cad_face) fill_cad_face(*f.cad_face, msg->mutable_cad_face());
     fill_surface(f, msg);
   }
   fill_timing(analysis.timing(), out.mutable_timing());

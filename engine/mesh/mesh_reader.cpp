@@ -489,8 +489,8 @@ Status read_ply(std::string_view s, RawMesh& m) {
 
 std::optional<MeshFormat> parse_mesh_format(std::string_view name) {
   if (!name.empty() && name.front() == '.') name.remove_prefix(1);
-  if (name.size() != 3) return std::nullopt;
   std::string ext = lower(std::string(name));
+  if (ext == "stp" || ext == "step") return MeshFormat::kStep;
   if (ext == "off") return MeshFormat::kOff;
   if (ext == "obj") return MeshFormat::kObj;
   if (ext == "stl") return MeshFormat::kStl;
@@ -508,6 +508,7 @@ StatusOr<RawMesh> read_raw_mesh(std::string_view bytes, MeshFormat format, const
     case MeshFormat::kObj: st = read_obj(bytes, m); break;
     case MeshFormat::kStl: st = read_stl(bytes, m); break;
     case MeshFormat::kPly: st = read_ply(bytes, m); break;
+    case MeshFormat::kStep: return InvalidArgument(source + ": a STEP part is a B-rep, not a mesh (read_step tessellates it)");
     default: return InvalidArgument(source + ": unknown mesh format");
   }
   if (!st.ok()) return st;
@@ -527,7 +528,7 @@ StatusOr<RawMesh> read_raw_mesh(const std::string& path) {
   const std::optional<MeshFormat> format = parse_mesh_format(ext);
   if (!format)
     return InvalidArgument(path + ": unknown mesh file extension '" + lower(ext) +
-                           "' (expected .off, .obj, .stl or .ply)");
+                           "' (expected .off, .obj, .stl, .ply, or .stp/.step for STEP)");
   std::ifstream in(path, std::ios::binary);
   if (!in) return NotFound(path + ": cannot open file");
   std::string data;

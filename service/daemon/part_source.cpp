@@ -19,6 +19,7 @@ std::optional<MeshFormat> format_of(v1::PartFormat f) {
     case v1::PART_FORMAT_OFF: return MeshFormat::kOff;
     case v1::PART_FORMAT_OBJ: return MeshFormat::kObj;
     case v1::PART_FORMAT_PLY: return MeshFormat::kPly;
+    case v1::PART_FORMAT_STEP: return MeshFormat::kStep;
     default: return std::nullopt;
   }
 }
@@ -90,7 +91,7 @@ StatusOr<PartBytes> load_part(const v1::Part& part, const Limits& limits) {
       if (part.data().size() > limits.max_request_bytes) {
         return ResourceExhausted(too_big(part.data().size(), limits.max_request_bytes));
       }
-      if (!format) return InvalidArgument("part.format: set it (stl, off, obj or ply) when sending part.data");
+      if (!format) return InvalidArgument("part.format: set it (stl, off, obj, ply or step) when sending part.data");
       out.bytes = part.data();
       out.name = part.name().empty() ? "part" : part.name();
       break;
@@ -101,7 +102,7 @@ StatusOr<PartBytes> load_part(const v1::Part& part, const Limits& limits) {
       if (!bytes.ok()) return bytes.status();
       if (!format) format = parse_mesh_format(path->extension().string());
       if (!format) {
-        return InvalidArgument("part.format: set it, or give the path an extension .stl, .off, .obj or .ply ('" +
+        return InvalidArgument("part.format: set it, or give the path an extension .stl, .off, .obj, .ply, .stp or .step ('" +
                                part.path() + "')");
       }
       out.bytes = std::move(*bytes);

@@ -36,7 +36,8 @@ def part_message(path, name=None, fmt=None):
     with open(path, "rb") as f:
         data = f.read()
     formats = {".stl": service_pb2.PART_FORMAT_STL, ".off": service_pb2.PART_FORMAT_OFF,
-               ".obj": service_pb2.PART_FORMAT_OBJ, ".ply": service_pb2.PART_FORMAT_PLY}
+               ".obj": service_pb2.PART_FORMAT_OBJ, ".ply": service_pb2.PART_FORMAT_PLY,
+               ".stp": service_pb2.PART_FORMAT_STEP, ".step": service_pb2.PART_FORMAT_STEP}
     if fmt is None:
         fmt = formats[os.path.splitext(path)[1].lower()]
     return service_pb2.Part(data=data, format=fmt, name=name or path)

@@ -13,7 +13,7 @@ import threading
 import time
 import unittest
 
-from harness import (BAD, CLIENT, GVM, GVMD, Daemon, cli_json, grpc, part_message, part_path, plan_pb2,
+from harness import (BAD, CLIENT, GVM, GVMD, SHARED, Daemon, cli_json, grpc, part_message, part_path, plan_pb2,
                      plan_request, service_pb2, without_run_facts)
 from google.protobuf import json_format
 from gvm.v1 import gvm_pb2
@@ -67,6 +67,16 @@ class ResultsEqualTheCommandLine(unittest.TestCase):
         strip = lambda text: [l for l in text.splitlines() if not l.startswith("Timing:")]
         self.assertEqual(strip(remote.stdout), strip(local.stdout))
         self.assertIn("Optimality:", remote.stdout)
+
+    def test_step_part_from_python_and_cpp_equals_cli(self):
+        """A STEP part sent as bytes: tessellated, its B-rep faces as features, as the CLI does."""
+        path = os.path.join(SHARED, "data", "step", "bug32745_pmi1.stp")
+        response = self.daemon.stub().Plan(plan_request(path), timeout=600)
+        self.assertEqual(without_run_facts(as_dict(response.plan)), without_run_facts(cli_json("plan", path)))
+        self.assertEqual(response.plan.part.cad_faces, 30)
+        remote = subprocess.run([GVM, "plan", path, "--json", "-", "--server", self.daemon.address],
+                                capture_output=True, text=True, check=True)
+        self.assertEqual(without_run_facts(json.loads(remote.stdout)), without_run_facts(cli_json("plan", path)))
 
     def test_report_from_the_daemon_equals_the_local_report(self):
         """`gvm plan --server --report`: the daemon's plan and analysis, the part drawn here."""

@@ -25,4 +25,20 @@ std::string write_obj(const RawMesh& raw, const std::filesystem::path& path) {
   return path.string();
 }
 
+std::string write_off(const RawMesh& raw, const std::filesystem::path& path) {
+  std::ofstream out(path);
+  out << "OFF\n" << raw.points.size() << " " << raw.faces.size() << " 0\n";
+  char buf[128];
+  for (const Point3& p : raw.points) {
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+    out << buf;
+  }
+  for (const auto& face : raw.faces) {
+    out << face.size();
+    for (uint32_t v : face) out << " " << v;
+    out << "\n";
+  }
+  return path.string();
+}
+
 }  // namespace gvm::test

@@ -13,4 +13,7 @@ namespace gvm::test {
 // group (`g name`), so that the groups become the features; returns the path.
 std::string write_obj(const RawMesh& raw, const std::filesystem::path& path);
 
+// Writes the points and faces as OFF, coordinates exactly ("%.17g"); returns the path.
+std::string write_off(const RawMesh& raw, const std::filesystem::path& path);
+
 }  // namespace gvm::test

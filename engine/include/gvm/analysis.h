@@ -21,12 +21,13 @@
 #include "gvm/geometry.h"
 #include "gvm/mesh.h"
 #include "gvm/status.h"
+#include "gvm/step.h"
 #include "gvm/v1/gvm.pb.h"
 
 namespace gvm {
 
 struct AnalyzeRequest {
-  std::string part_path;
+  std::string part_path;            // a mesh (OFF, OBJ, STL, PLY) or a STEP file (options.step)
   std::string groups_path;          // optional JSON of named face groups
   v1::AnalyzeOptions options;
   // Called now and then from the computing threads with (surfaces done, surfaces total);
@@ -83,6 +84,7 @@ struct Surface {
   std::vector<uint32_t> features;    // regions: the features inside
   // Every triangle lies in one plane with one orientation: its outward normal, exactly.
   std::optional<Direction> planar_normal;
+  std::optional<CadFace> cad_face;   // features of a STEP part: the B-rep face they are
   SurfaceMaps maps;
 };
 
@@ -91,6 +93,11 @@ struct PartSummary {
   uint32_t input_faces = 0, input_vertices = 0, triangles = 0;
   uint32_t shells = 0, void_shells = 0, hull_faces = 0;
   Point3 box_min, box_max;
+  // STEP parts: the file's declared length unit (coordinates are mm), the B-rep faces and
+  // the tessellation's deflections as applied.
+  std::string file_unit;
+  uint32_t cad_faces = 0;
+  double linear_deflection = 0, angular_deflection_degrees = 0;
 };
 
 struct AnalysisTiming {
@@ -138,5 +145,9 @@ class Analysis {
 Status validate(const v1::AnalyzeOptions& options);
 
 StatusOr<Analysis> analyze(const AnalyzeRequest& request);
+
+// The validated solid analyze() would work on for this request -- a mesh, or a STEP part
+// tessellated the same way -- without any maps: to draw a result computed elsewhere.
+StatusOr<SolidMesh> load_part_solid(const AnalyzeRequest& request);
 
 }  // namespace gvm

@@ -42,9 +42,11 @@ struct SolidMesh {
   std::map<std::string, std::vector<uint32_t>> groups;  // from the file, input face ids
 };
 
-enum class MeshFormat { kOff, kObj, kStl, kPly };
+// kStep is a B-rep, not a mesh: read_step (gvm/step.h) tessellates it; analyze() takes it.
+enum class MeshFormat { kOff, kObj, kStl, kPly, kStep };
 
-// "off", "obj", "stl", "ply" (any case, optional leading dot); nothing otherwise.
+// "off", "obj", "stl", "ply", "stp", "step" (any case, optional leading dot); nothing
+// otherwise.
 std::optional<MeshFormat> parse_mesh_format(std::string_view name);
 
 // Reads OFF, OBJ, STL (ASCII or binary) or PLY, chosen by file extension (through

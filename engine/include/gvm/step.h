@@ -1,0 +1,84 @@
+// Reading a STEP file (AP203/AP214/AP242 B-rep) into a closed triangle mesh with one record
+// per B-rep face.
+//
+// Why a topological weld: the mesh must be closed for build_solid, and welding nodes by
+// rounded coordinates either misses points (two faces compute the same edge node with
+// different roundings) or merges distinct ones (sliver faces, small fillets). Open CASCADE
+// already knows which triangulation nodes are the same point -- the B-rep vertices and the
+// shared discretisation of every edge -- so the weld follows the topology and never
+// compares coordinates.
+//
+// Thread safety: read_step may be called from several threads. The STEP translation uses
+// Open CASCADE's process-wide Interface_Static parameters (the length unit among them), so
+// that part of the work is serialised by a mutex inside the module; meshing and the weld
+// run concurrently.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gvm/mesh.h"
+#include "gvm/status.h"
+
+namespace gvm {
+
+// The geometry under a B-rep face, as Open CASCADE classifies it (BRepAdaptor_Surface).
+enum class CadSurfaceType {
+  kPlane, kCylinder, kCone, kSphere, kTorus, kBezier, kBSpline, kRevolution, kExtrusion,
+  kOffset, kOther
+};
+
+// "plane", "cylinder", "cone", "sphere", "torus", "bezier", "bspline", "revolution",
+// "extrusion", "offset", "other".
+std::string_view name_of(CadSurfaceType t);
+
+// One B-rep face of the solid.
+struct CadFace {
+  uint32_t index = 0;  // 0-based, in TopExp::MapShapes(shape, TopAbs_FACE) order
+  CadSurfaceType type = CadSurfaceType::kOther;
+  // Plane: the face's outward normal (face orientation applied); cylinder, cone: the axis
+  // direction (as OCCT gives it, gp_Ax1 of the surface's position, with location applied);
+  // unset otherwise.
+  std::optional<std::array<double, 3>> axis;
+  std::optional<std::array<double, 3>> location;  // a point of the plane / on the axis
+  double radius = 0;                               // cylinder radius, cone reference radius
+};
+
+struct StepOptions {
+  double linear_deflection = 0;  // mm; 0: 0.1% of the bounding box diagonal
+  double angular_deflection_degrees = 10;
+  int solid = -1;  // -1: the file must hold exactly one solid; else the 0-based solid to take
+};
+
+struct StepPart {
+  // Triangles counter-clockwise seen from outside, in mm; mesh.groups left empty. A planar
+  // face Open CASCADE cannot triangulate may appear as one polygon of its boundary points
+  // (build_solid splits it into triangles).
+  RawMesh mesh;
+  std::vector<uint32_t> face_cad;   // per mesh face: the index of its CAD face
+  std::vector<CadFace> cad_faces;   // every B-rep face of the solid
+  std::string file_unit;            // the length unit the file declares ("millimetre", "metre", "inch", ...)
+  double linear_deflection = 0, angular_deflection_degrees = 0;  // as applied
+};
+
+// Reads the file, checks that it holds the wanted solid and that the solid is a valid
+// B-rep, tessellates it and welds the triangulation by topology. Fails with kNotFound when
+// the file does not exist, kInvalidArgument (message naming the file and the problem:
+// not STEP, no solid, several solids, invalid B-rep face, face that cannot be
+// triangulated) otherwise.
+StatusOr<StepPart> read_step(const std::string& path, const StepOptions& options);
+
+// The same on bytes in memory (STEPControl_Reader::ReadStream); `source` names the part in
+// messages.
+StatusOr<StepPart> read_step(std::string_view bytes, const StepOptions& options,
+                             const std::string& source);
+
+// One face group per B-rep face, named "face 12 (cylinder)" (the features of a STEP part).
+std::map<std::string, std::vector<uint32_t>> brep_face_groups(const StepPart& part);
+
+}  // namespace gvm

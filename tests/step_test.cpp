@@ -1,0 +1,204 @@
+// STEP input: every STEP part of ../shared/data/step read, tessellated and welded into a
+// closed valid solid with one record per B-rep face; broken files named; the B-rep faces as
+// features; and the analysis of a STEP part equal to the analysis of its tessellation
+// written as OFF with the B-rep faces as groups.
+#include <google/protobuf/util/message_differencer.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "gvm/analysis.h"
+#include "gvm/analysis_proto.h"
+#include "gvm/planner/plan.h"
+#include "gvm/step.h"
+#include "support/mesh_files.h"
+#include "support/scratch_dir.h"
+
+namespace gvm {
+namespace {
+
+std::string step_path(const std::string& name) { return std::string(GVM_SHARED_DIR) + "/data/step/" + name; }
+
+struct GoodPart {
+  const char* file;
+  size_t brep_faces;                 // from ../shared/data/step/SOURCES.md
+  const char* unit;
+  std::array<double, 3> box_mm;      // bounding box size after conversion to mm
+};
+
+const GoodPart kGoodParts[] = {
+    {"bug3883_xr2-ct-214_plate.stp", 18, "millimetre", {180, 150, 20}},
+    {"bug3883_xr2-ct-214_l-bracket.stp", 16, "millimetre", {50, 60, 100}},
+    {"bm2_ec_lever-A.stp", 49, "metre", {235, 249.9, 86}},
+    {"bug27453_165-174_piattello.stp", 313, "millimetre", {114, 107, 74.5}},
+    {"r103ec.stp", 146, "metre", {140.2, 153.9, 39}},
+    {"trj6_k1-pe-203.stp", 52, "inch", {127, 48.26, 12.71}},
+    {"bug32745_pmi1.stp", 30, "millimetre", {20, 10, 6}},
+    {"trj10_b2-oc-214.stp", 251, "millimetre", {110.5, 98.02, 68}},
+    {"bug25169_box-openshell.stp", 6, "millimetre", {20, 20, 20}},  // OCCT heals the open shell
+};
+
+std::array<double, 3> box_size(const RawMesh& mesh) {
+  std::array<double, 3> lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Point3& p : mesh.points) {
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  }
+  return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+}
+
+TEST(StepRead, EveryGoodPartIsAClosedValidSolidWithEveryBrepFace) {
+  for (const GoodPart& g : kGoodParts) {
+    SCOPED_TRACE(g.file);
+    StatusOr<StepPart> part = read_step(step_path(g.file), {});
+    ASSERT_TRUE(part.ok()) << part.status().message();
+    EXPECT_EQ(part->cad_faces.size(), g.brep_faces);
+    EXPECT_EQ(part->file_unit, g.unit);
+    // Every B-rep face has triangles, and the mesh faces know theirs.
+    ASSERT_EQ(part->face_cad.size(), part->mesh.faces.size());
+    EXPECT_EQ(std::set<uint32_t>(part->face_cad.begin(), part->face_cad.end()).size(), g.brep_faces);
+    // Closed, manifold, oriented outward, no self-intersection: our own validation.
+    StatusOr<SolidMesh> solid = build_solid(part->mesh);
+    EXPECT_TRUE(solid.ok()) << solid.status().message();
+    // Millimetres whatever the file's unit (the sizes of SOURCES.md are OCCT's exact box,
+    // the tessellation's points lie on the surfaces: within the deflection).
+    const std::array<double, 3> size = box_size(part->mesh);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(size[i], g.box_mm[i], 0.01 * g.box_mm[i] + 0.2) << "axis " << i;
+  }
+}
+
+TEST(StepRead, BrokenFilesAreRejectedNamingTheProblem) {
+  auto message = [](const StatusOr<StepPart>& r) { return r.ok() ? std::string("(read)") : r.status().message(); };
+  const StatusOr<StepPart> open = read_step(step_path("bug25415_part_of_hdrv8w64p254_4x2_1016x502h838p.stp"), {});
+  EXPECT_EQ(open.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(message(open).find("no solid"), std::string::npos) << message(open);
+  EXPECT_NE(message(open).find("free edges"), std::string::npos) << message(open);
+
+  const StatusOr<StepPart> corrupted = read_step(step_path("bug32314_corrupted.stp"), {});
+  EXPECT_NE(message(corrupted).find("11 solids"), std::string::npos) << message(corrupted);
+  EXPECT_NE(message(corrupted).find("damaged"), std::string::npos) << message(corrupted);
+  StepOptions eleventh;
+  eleventh.solid = 11;
+  EXPECT_NE(message(read_step(step_path("bug32314_corrupted.stp"), eleventh)).find("0..10"), std::string::npos);
+
+  EXPECT_EQ(read_step(step_path("no-such-part.stp"), {}).status().code(), StatusCode::kNotFound);
+  const StatusOr<StepPart> garbage = read_step(std::string_view("ISO-10303-21;\nHEADER;\ngarbage"), {}, "garbage.stp");
+  EXPECT_NE(message(garbage).find("garbage.stp"), std::string::npos) << message(garbage);
+  EXPECT_FALSE(garbage.ok());
+  EXPECT_FALSE(read_step(std::string_view(""), {}, "empty.stp").ok());
+}
+
+TEST(StepRead, BytesInMemoryGiveTheSameMesh) {
+  const std::string path = step_path("bug32745_pmi1.stp");
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  StatusOr<StepPart> a = read_step(path, {}), b = read_step(bytes, {}, "pmi1.stp");
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(a->mesh.faces, b->mesh.faces);
+  ASSERT_EQ(a->mesh.points.size(), b->mesh.points.size());
+  for (size_t i = 0; i < a->mesh.points.size(); ++i) {
+    EXPECT_EQ(a->mesh.points[i].x, b->mesh.points[i].x);
+    EXPECT_EQ(a->mesh.points[i].y, b->mesh.points[i].y);
+    EXPECT_EQ(a->mesh.points[i].z, b->mesh.points[i].z);
+  }
+}
+
+Analysis analyzed(AnalyzeRequest request) {
+  auto a = analyze(request);
+  EXPECT_TRUE(a.ok()) << a.status().message();
+  return std::move(*a);
+}
+
+// The features are the B-rep faces, each with its CAD face; a STEP part analysed equals
+// its tessellation analysed as an OFF file with the B-rep faces as groups, map for map.
+void expect_same_as_its_tessellation(const std::string& file) {
+  SCOPED_TRACE(file);
+  StatusOr<StepPart> part = read_step(step_path(file), {});
+  ASSERT_TRUE(part.ok()) << part.status().message();
+  AnalyzeRequest from_step;
+  from_step.part_path = step_path(file);
+  const v1::Analysis step = to_proto(analyzed(from_step));
+  ASSERT_EQ(static_cast<size_t>(step.features_size()), part->cad_faces.size());
+  for (const v1::Feature& f : step.features()) {
+    ASSERT_TRUE(f.has_cad_face()) << f.name();
+    EXPECT_EQ(f.cad_face().index(), f.id()) << "features come in B-rep face order";
+    for (uint32_t face : f.faces()) EXPECT_EQ(part->face_cad[face], f.cad_face().index());
+    EXPECT_EQ(f.cad_face().surface_type(), name_of(part->cad_faces[f.id()].type));
+  }
+  EXPECT_EQ(step.part().cad_faces(), part->cad_faces.size());
+
+  std::ostringstream groups;
+  groups << "{";
+  bool first = true;
+  for (const auto& [name, faces] : brep_face_groups(*part)) {
+    groups << (first ? "" : ",") << "\"" << name << "\":[";
+    for (size_t i = 0; i < faces.size(); ++i) groups << (i ? "," : "") << faces[i];
+    groups << "]";
+    first = false;
+  }
+  groups << "}";
+  AnalyzeRequest from_off;
+  from_off.part_path = test::write_off(part->mesh, test::scratch_dir() / (file + ".off"));
+  from_off.groups_json = groups.str();
+  const v1::Analysis off = to_proto(analyzed(from_off));
+  ASSERT_EQ(off.features_size(), step.features_size());
+  ASSERT_EQ(off.regions_size(), step.regions_size());
+  for (int i = 0; i < step.features_size(); ++i) {
+    EXPECT_EQ(off.features(i).name(), step.features(i).name());
+    EXPECT_EQ(off.features(i).faces_size(), step.features(i).faces_size());
+    EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(off.features(i).gvm(), step.features(i).gvm()))
+        << step.features(i).name();
+    EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(off.features(i).lvm(), step.features(i).lvm()))
+        << step.features(i).name();
+  }
+  for (int i = 0; i < step.regions_size(); ++i) {
+    EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(off.regions(i).gvm(), step.regions(i).gvm()));
+  }
+}
+
+// Two parts whose analysis takes seconds (the plate's face 17 alone takes minutes: the
+// label-long test StepPlan.AllParts covers the rest).
+TEST(StepAnalysis, FeaturesAreTheBrepFacesAndTheMapsThoseOfTheTessellation) {
+  expect_same_as_its_tessellation("bug32745_pmi1.stp");
+  expect_same_as_its_tessellation("bm2_ec_lever-A.stp");
+}
+
+// The planner on STEP parts: every feature (a B-rep face) planned in one setup whose exact
+// direction is in its GVM, or unreachable with a reason.
+TEST(StepPlan, SmallPartsArePlanned) {
+  for (const char* file : {"bug25169_box-openshell.stp", "bug32745_pmi1.stp", "bm2_ec_lever-A.stp"}) {
+    SCOPED_TRACE(file);
+    AnalyzeRequest request;
+    request.part_path = step_path(file);
+    const Analysis analysis = analyzed(request);
+    StatusOr<planner::SetupPlan> plan = planner::plan(analysis, {});
+    ASSERT_TRUE(plan.ok()) << plan.status().message();
+    const v1::Plan& p = plan->message;
+    EXPECT_GE(p.setups_size(), 1);
+    EXPECT_EQ(p.reached() + p.unreachable_count(), analysis.features().size());
+    EXPECT_TRUE(p.optimal()) << p.lower_bound() << " < " << p.setups_size();
+    for (const v1::PlannedSurface& s : p.surfaces()) {
+      if (s.setup() < 0) continue;
+      const Direction& d = plan->directions[s.setup()];
+      ASSERT_TRUE(analysis.features()[s.id()].maps.gvm.has_value());
+      EXPECT_TRUE(analysis.features()[s.id()].maps.gvm->contains(d)) << s.name();
+    }
+  }
+}
+
+TEST(StepAnalysis, AutoFeaturesGroupTheMesh) {
+  AnalyzeRequest request;
+  request.part_path = step_path("bug32745_pmi1.stp");
+  request.options.mutable_step()->set_features(v1::STEP_FEATURES_AUTO);
+  const v1::Analysis a = to_proto(analyzed(request));
+  EXPECT_NE(a.features_size(), 30);
+  for (const v1::Feature& f : a.features()) EXPECT_EQ(f.name(), "F" + std::to_string(f.id()));
+}
+
+}  // namespace
+}  // namespace gvm
