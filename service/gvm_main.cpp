@@ -25,7 +25,8 @@ Usage:
   gvm --help                    show this help
   gvm --version                 show the version
 
-PART is a closed polyhedral mesh: OFF, OBJ, STL (ASCII or binary) or PLY. It is
+PART is a closed polyhedral mesh: OFF, OBJ, STL (ASCII or binary) or PLY, or a STEP
+file (.stp, .step: one B-rep solid, tessellated, its B-rep faces the features). It is
 validated first (closed, manifold, consistently and outward oriented, no zero-area
 or duplicate faces, no self-intersections); internal voids are allowed.
 
@@ -39,6 +40,15 @@ Options of both commands:
   --json OUT           also write the result as JSON (protobuf JSON mapping of
                        gvm.v1.Plan for plan, gvm.v1.Analysis for analyze) to OUT
                        ("-" for standard output)
+  --report HTML        also write a self-contained HTML report: the part in 3D
+                       coloured by setup, every GVM on the sphere, the tables,
+                       a static view along each setup (checked before any work)
+  --solid N            STEP: the solid to read when the file holds several (from 0)
+  --deflection MM      STEP: the tessellation's linear deflection (default 0.1% of
+                       the bounding box diagonal)
+  --angle DEG          STEP: the tessellation's angular deflection (default 10)
+  --features F         STEP: brep (default, one feature per B-rep face) or auto
+                       (grouped from the mesh, as for any mesh)
   --threads N          worker threads (default: all cores)
   --method M           how the occlusion by O_S is computed: eme (effective
                        Minkowski envelope, the default) or convex (union of

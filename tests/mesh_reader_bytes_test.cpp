@@ -157,7 +157,9 @@ TEST(MeshReaderBytes, ParseMeshFormat) {
   EXPECT_EQ(parse_mesh_format(".OBJ"), MeshFormat::kObj);
   EXPECT_EQ(parse_mesh_format("Stl"), MeshFormat::kStl);
   EXPECT_EQ(parse_mesh_format(".ply"), MeshFormat::kPly);
-  for (const char* bad : {"", ".", "st", "stla", "..stl", "step", "x.stl", " stl"}) {
+  EXPECT_EQ(parse_mesh_format("step"), MeshFormat::kStep);
+  EXPECT_EQ(parse_mesh_format(".STP"), MeshFormat::kStep);
+  for (const char* bad : {"", ".", "st", "stla", "..stl", "steps", "x.stl", " stl", "igs"}) {
     EXPECT_FALSE(parse_mesh_format(bad).has_value()) << bad;
   }
 }
@@ -175,9 +177,13 @@ TEST(MeshReaderBytes, SameAsFromTheFile) {
 }
 
 TEST(MeshReaderBytes, PathErrorsKept) {
-  auto unknown = read_raw_mesh(write("part.step", "solid x\n"));
+  auto unknown = read_raw_mesh(write("part.igs", "solid x\n"));
   EXPECT_EQ(unknown.status().code(), StatusCode::kInvalidArgument);
-  EXPECT_NE(unknown.status().message().find("unknown mesh file extension 'step'"), std::string::npos);
+  EXPECT_NE(unknown.status().message().find("unknown mesh file extension 'igs'"), std::string::npos);
+  // A STEP file is a B-rep: analyze() reads it with read_step, the mesh reader says so.
+  auto step = read_raw_mesh(write("part.step", "ISO-10303-21;\n"));
+  EXPECT_EQ(step.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(step.status().message().find("read_step"), std::string::npos) << step.status().message();
   EXPECT_EQ(read_raw_mesh("/nonexistent/part.stl").status().code(), StatusCode::kNotFound);
   auto empty = read_raw_mesh("", MeshFormat::kObj, "memory part");
   EXPECT_EQ(empty.status().code(), StatusCode::kInvalidArgument);

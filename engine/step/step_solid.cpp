@@ -134,9 +134,9 @@ StatusOr<TopoDS_Shape> select_solid(const TopoDS_Shape& shape, int choice, const
   if (choice < 0 && (n > 1 || !loose.empty()))
     return InvalidArgument(source + ": holds " + plural(n, "solid") +
                            (loose.empty() ? "" : " and " + loose + " outside them") +
-                           "; set options.solid (0.." + S(n - 1) + ") to choose the solid to read");
+                           "; choose one with --solid N (a request's step.solid), N from 0 to " + S(n - 1));
   if (choice >= int(n))
-    return InvalidArgument(source + ": options.solid = " + S(choice) + " but the file holds only " +
+    return InvalidArgument(source + ": solid " + S(choice) + " asked for (--solid, step.solid) but the file holds only " +
                            plural(n, "solid") + " (0.." + S(n - 1) + ")");
   TopoDS_Shape solid = solids(choice < 0 ? 1 : choice + 1);
   if (size_t open = free_edges(solid); open > 0)
