@@ -134,6 +134,14 @@ void expect_same_as_its_tessellation(const std::string& file) {
     EXPECT_EQ(f.cad_face().surface_type(), name_of(part->cad_faces[f.id()].type));
   }
   EXPECT_EQ(step.part().cad_faces(), part->cad_faces.size());
+  // A hole's GVM point is its B-rep axis, up to the rounding of the printed doubles.
+  for (const v1::Feature& f : step.features()) {
+    if (f.cad_face().surface_type() != "cylinder") continue;
+    const v1::Vec3& a = f.cad_face().axis();
+    for (const v1::Vec3& p : f.gvm().points()) {
+      EXPECT_GT(std::fabs(p.x() * a.x() + p.y() * a.y() + p.z() * a.z()), 1 - 1e-12) << f.name();
+    }
+  }
 
   std::ostringstream groups;
   groups << "{";
