@@ -57,7 +57,9 @@ function surfaceInfo(id, face = null) {
   const setup = setupOf.get(id);
   const where = plan ? (setup === undefined ? "not planned" : setup >= 0 ? `setup ${setup + 1}` : "unreachable") : "";
   const image = s.gvm || s.lvm || {};
-  return `${face === null ? "" : `face ${face} · `}${s.name || "S" + id} (${(s.faces || []).length} faces)${where ? " · " + where : ""} · GVM: ${image.description || "not computed"}`;
+  const cad = s.cadFace ? ` · B-rep face ${s.cadFace.index || 0}, ${s.cadFace.surfaceType}` +
+    (s.cadFace.axis ? ` about ${T.direction(s.cadFace.axis)}` : "") : "";
+  return `${face === null ? "" : `face ${face} · `}${s.name || "S" + id} (${(s.faces || []).length} faces)${cad}${where ? " · " + where : ""} · GVM: ${image.description || "not computed"}`;
 }
 
 function showInfo(text) {

@@ -102,6 +102,8 @@ export function partTable(part) {
     ["hull faces", part.hullFaces || 0],
     ["bounding box", `${direction(b.min)} – ${direction(b.max)}`],
     ["validation", part.validation || ""],
+    ...(part.cadFaces ? [["STEP", `${part.cadFaces} B-rep faces, file unit ${part.fileUnit} (coordinates in mm), ` +
+      `tessellated at ${num(part.linearDeflection, 4)} mm and ${num(part.angularDeflectionDegrees, 1)}°`]] : []),
   ], "part");
 }
 
