@@ -123,7 +123,7 @@ StatusOr<RawMesh> read_step_part(const AnalyzeRequest& request, std::optional<St
       request.part_bytes ? read_step(*request.part_bytes, options, part_name(request)) : read_step(request.part_path, options);
   if (!read.ok()) return read.status();
   step.emplace(std::move(*read));
-  RawMesh raw = step->mesh;
+  RawMesh raw = std::move(step->mesh);  // the rest of `step` names the B-rep faces
   if (request.options.step().features() != v1::STEP_FEATURES_AUTO) raw.groups = brep_face_groups(*step);
   return raw;
 }
@@ -253,6 +253,22 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
   return Analysis(std::move(impl));
 }
 
+Status validate_step(const v1::StepOptions& step) {
+  if (!(std::isfinite(step.linear_deflection()) && step.linear_deflection() >= 0)) {
+    return InvalidArgument("step.linear_deflection must be a length in mm > 0 (0: the default), not " +
+                           std::to_string(step.linear_deflection()));
+  }
+  const double angle = step.angular_deflection_degrees();
+  if (!(std::isfinite(angle) && angle >= 0 && angle < 90)) {
+    return InvalidArgument("step.angular_deflection_degrees must be an angle in degrees, 0 < DEG < 90 (0: the default), not " +
+                           std::to_string(angle));
+  }
+  if (!v1::StepFeatures_IsValid(step.features())) {
+    return InvalidArgument("step.features " + std::to_string(step.features()) + " is not brep or auto");
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status validate(const v1::AnalyzeOptions& options) {
@@ -267,20 +283,7 @@ Status validate(const v1::AnalyzeOptions& options) {
   if (!v1::OcclusionMethod_IsValid(options.occlusion_method())) {
     return InvalidArgument("occlusion_method " + std::to_string(options.occlusion_method()) + " is not a method");
   }
-  const v1::StepOptions& step = options.step();
-  if (!(std::isfinite(step.linear_deflection()) && step.linear_deflection() >= 0)) {
-    return InvalidArgument("step.linear_deflection must be a length in mm > 0 (0: the default), not " +
-                           std::to_string(step.linear_deflection()));
-  }
-  const double deflection_angle = step.angular_deflection_degrees();
-  if (!(std::isfinite(deflection_angle) && deflection_angle >= 0 && deflection_angle < 90)) {
-    return InvalidArgument("step.angular_deflection_degrees must be an angle in degrees, 0 < DEG < 90 (0: the default), not " +
-                           std::to_string(deflection_angle));
-  }
-  if (!v1::StepFeatures_IsValid(step.features())) {
-    return InvalidArgument("step.features " + std::to_string(step.features()) + " is not brep or auto");
-  }
-  return Status::Ok();
+  return validate_step(options.step());
 }
 
 StatusOr<SolidMesh> load_part_solid(const AnalyzeRequest& request) {
