@@ -97,10 +97,15 @@ void paint_plan(const Surfaces& surfaces, const v1::Plan& plan, int32_t unreacha
 
 }  // namespace
 
-std::string faded(const std::string& color) {
+Rgb rgb_of(const std::string& color) {
   const unsigned v = static_cast<unsigned>(std::stoul(color.substr(1), nullptr, 16));
-  auto f = [](unsigned c) { return 0.78 + 0.22 * (c / 255.0); };
-  return hex(f((v >> 16) & 255), f((v >> 8) & 255), f(v & 255));
+  return {static_cast<uint8_t>(v >> 16), static_cast<uint8_t>(v >> 8), static_cast<uint8_t>(v)};
+}
+
+std::string faded(const std::string& color) {
+  const Rgb c = rgb_of(color);
+  auto f = [](uint8_t x) { return 0.78 + 0.22 * (x / 255.0); };
+  return hex(f(c.r), f(c.g), f(c.b));
 }
 
 FaceClasses plan_classes(const v1::Analysis& analysis, const v1::Plan& plan, uint32_t input_faces) {

@@ -10,6 +10,7 @@
 
 #include "gvm/v1/gvm.pb.h"
 #include "gvm/v1/plan.pb.h"
+#include "snapshot.h"
 
 namespace gvm::report {
 
@@ -36,5 +37,8 @@ FaceClasses analysis_classes(const v1::Analysis& analysis, uint32_t input_faces)
 
 // The colour of a face that is not the one selected: faded towards white.
 std::string faded(const std::string& color);
+
+// "#rrggbb" as its three bytes.
+Rgb rgb_of(const std::string& color);
 
 }  // namespace gvm::report

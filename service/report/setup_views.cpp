@@ -10,11 +10,6 @@
 namespace gvm::report {
 namespace {
 
-Rgb rgb_of(const std::string& color) {
-  const unsigned v = static_cast<unsigned>(std::stoul(color.substr(1), nullptr, 16));
-  return {static_cast<uint8_t>(v >> 16), static_cast<uint8_t>(v >> 8), static_cast<uint8_t>(v)};
-}
-
 std::string figure(const StaticView& view, const std::string& png) {
   std::string out = "<figure class=\"snapshot\"";
   if (view.setup) out += " data-setup=\"" + std::to_string(*view.setup) + "\"";
