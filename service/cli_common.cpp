@@ -1,5 +1,6 @@
 #include "cli_common.h"
 
+#include "common/atomic_file.h"
 #include "report/html_report.h"
 
 #include <spdlog/spdlog.h>
@@ -12,13 +13,24 @@
 
 namespace gvm::cli {
 
+namespace {
+
+std::string& program_name() {
+  static std::string name = "gvm";
+  return name;
+}
+
+}  // namespace
+
+void set_program_name(const std::string& name) { program_name() = name; }
+
 int usage_error(const std::string& message) {
-  std::cerr << "gvm: " << message << "\nRun 'gvm --help' for usage.\n";
+  std::cerr << program_name() << ": " << message << "\nRun '" << program_name() << " --help' for usage.\n";
   return 2;
 }
 
 int failure(const std::string& message) {
-  std::cerr << "gvm: " << message << "\n";
+  std::cerr << program_name() << ": " << message << "\n";
   return 1;
 }
 
@@ -27,19 +39,7 @@ bool write_output(const std::string& path, const std::string& content) {
     std::cout << content;
     return static_cast<bool>(std::cout.flush());
   }
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out || !(out << content) || !out.flush()) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) std::filesystem::remove(tmp, ec);
-  return !ec;
+  return write_file_atomically(path, content);
 }
 
 CLI::Option* add_value(CLI::App& command, const std::string& name, const std::string& meta,
@@ -48,6 +48,12 @@ CLI::Option* add_value(CLI::App& command, const std::string& name, const std::st
     if (!read(value)) throw CLI::ValidationError(name + " needs " + needs + " (not '" + value + "')");
   };
   return command.add_option_function<std::string>(name, apply)->type_name(meta);
+}
+
+void add_threads(CLI::App& command, unsigned& threads) {
+  add_value(command, "--threads", "N", "a number from 1 to 1024", [&threads](const std::string& v) {
+    return parse_number(v, threads) && threads >= 1 && threads <= 1024;
+  });
 }
 
 namespace {
@@ -80,10 +86,9 @@ void add_step_options(CLI::App& command, v1::StepOptions& step) {
   });
 }
 
-// What to analyse and how: the options that change the maps.
+}  // namespace
+
 void add_map_options(CLI::App& command, AnalysisArgs& args) {
-  command.add_option("PART", args.parts, "mesh file(s); several with --server")->type_name("PART");
-  command.add_option("--groups", args.groups)->type_name("FILE");
   add_value(command, "--feature-angle", "DEG", "an angle in degrees, 0 < DEG < 180", [&args](const std::string& v) {
     double deg = 0;
     if (!parse_number(v, deg) || !(deg > 0 && deg < 180)) return false;
@@ -100,13 +105,13 @@ void add_map_options(CLI::App& command, AnalysisArgs& args) {
   command.add_flag("--global-occlusion")->group("");
 }
 
+namespace {
+
 // Where it runs and what it prints: the same maps whatever these say.
 void add_run_options(CLI::App& command, AnalysisArgs& args) {
   command.add_option("--json", args.json)->type_name("OUT");
   command.add_option("--report", args.report)->type_name("HTML");
-  add_value(command, "--threads", "N", "a number from 1 to 1024", [&args](const std::string& v) {
-    return parse_number(v, args.threads) && args.threads >= 1 && args.threads <= 1024;
-  });
+  add_threads(command, args.threads);
   add_value(command, "--server", "ADDRESS", "the daemon's address, e.g. unix:/run/user/1000/gvmd.sock",
             [&args](const std::string& v) {
               args.server = v;
@@ -122,6 +127,8 @@ void add_run_options(CLI::App& command, AnalysisArgs& args) {
 }  // namespace
 
 void add_analysis_options(CLI::App& command, AnalysisArgs& args) {
+  command.add_option("PART", args.parts, "mesh file(s); several with --server")->type_name("PART");
+  command.add_option("--groups", args.groups)->type_name("FILE");
   add_map_options(command, args);
   add_run_options(command, args);
 }

@@ -19,6 +19,9 @@ class Option;
 
 namespace gvm::cli {
 
+// The program messages name: "gvm" unless set.
+void set_program_name(const std::string& name);
+
 // Prints "gvm: message" and the hint to stderr; returns the usage-error status, 2.
 int usage_error(const std::string& message);
 
@@ -57,6 +60,13 @@ struct AnalysisArgs {
 // what it `needs` ("an angle in degrees, 0 < DEG < 180"), not only that it is invalid.
 CLI::Option* add_value(CLI::App& command, const std::string& name, const std::string& meta,
                        const std::string& needs, std::function<bool(const std::string&)> read);
+
+// --threads N, 1 to 1024.
+void add_threads(CLI::App& command, unsigned& threads);
+
+// How the maps are computed: --feature-angle, --method, --lvm-only and the STEP options,
+// read into args (which must outlive the parse).
+void add_map_options(CLI::App& command, AnalysisArgs& args);
 
 // The PARTs and the options every command that analyses a part takes, read into args
 // (which must outlive the parse).

@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "cli_app.h"
 #include "cli_common.h"
+#include "batch/local_batch.h"
 #include "commands.h"
 
 namespace {
@@ -22,6 +24,9 @@ Usage:
   gvm analyze PART [options]    every concave region and feature with its maps
   gvm plan|analyze --server ADDRESS PART... [options]
                                 the same on a daemon (gvmd), several parts at once
+  gvm batch MANIFEST --out DIR [options]
+                                every part of a manifest planned, the plans in
+                                DIR; a part that fails is recorded, the rest go on
   gvm --help                    show this help
   gvm --version                 show the version
 
@@ -89,35 +94,28 @@ plan options:
   --cone DEG           probe mode: conical tolerance (default 5)
   --analysis-json OUT  also write the analysis the plan was made from
 
+batch options (with the plan options, --feature-angle, --method, --lvm-only, the
+STEP options, --threads, -v and -q, applied to every part):
+  MANIFEST             the parts: one path a line ('#' comments), or a CSV with a
+                       header (columns part, groups, name and any field of
+                       PlanOptions or AnalyzeOptions: mode, min_clearance_degrees,
+                       step.solid, ...), or a JSON gvm.v1.BatchManifest (by the
+                       extension .csv, .json); relative paths from its directory
+  --out DIR            writes NAME.plan.json and NAME.result.json per part (NAME:
+                       the file name without extension, or the manifest's name),
+                       then summary.csv and summary.json
+  --jobs N             parts at once, on one pool of --threads (default 1)
+  --max-memory SIZE    start a part only while the parts running are expected to
+                       fit in SIZE (e.g. 8G); one part always runs
+  --part-timeout SEC   stop a part after SEC seconds (recorded as timed out)
+  --resume             skip the parts done before with the same input and options
+  --analysis           also write NAME.analysis.json
 Directions are unit vectors u along which rays leave the surface; a tool or probe
 approaches along -u. Faces are numbered from 0 in input-file order.
 
-Exit status: 0 success, 1 invalid input or failure, 2 usage error.
+Exit status: 0 success, 1 invalid input or failure (batch: a part not done), 2 usage
+error, 128+N a batch stopped by signal N (--resume goes on).
 )";
-
-// -h/--help anywhere prints the whole usage at once, as before CLI11: its own help flag
-// would first check every other value given.
-void add_help_flag(CLI::App& command) {
-  command.set_help_flag();
-  command.add_flag_callback("-h,--help", [] { throw CLI::CallForHelp(); }, "show this help")->trigger_on_parse();
-}
-
-// The first argument no command took: a word where a command belongs, or an option.
-int unknown(const std::string& arg) {
-  return gvm::cli::usage_error(std::string(arg.starts_with('-') ? "unknown option '" : "unknown command '") + arg + "'");
-}
-
-int usage() {
-  std::cout << kUsage;
-  return 0;
-}
-
-void set_up_logging() {
-  auto logger = spdlog::stderr_color_mt("gvm");
-  spdlog::set_default_logger(logger);
-  spdlog::set_pattern("gvm: %v");
-  spdlog::set_level(spdlog::level::info);
-}
 
 // The commands and the options they share with the top level; how to run each command.
 std::map<std::string, gvm::cli::Run> add_commands(CLI::App& app) {
@@ -130,45 +128,29 @@ std::map<std::string, gvm::cli::Run> add_commands(CLI::App& app) {
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", std::string("gvm ") + GVM_VERSION, "show the version");
   std::map<std::string, gvm::cli::Run> commands = {{"analyze", gvm::cli::add_analyze(app)},
-                                                    {"plan", gvm::cli::add_plan(app)}};
+                                                    {"plan", gvm::cli::add_plan(app)},
+                                                    {"batch", gvm::cli::add_batch(app, gvm::batch::run_local)}};
   app.add_subcommand("help", "show this help")->allow_extras();
-  add_help_flag(app);
-  for (const auto& [name, run] : commands) add_help_flag(*app.get_subcommand(name));
+  gvm::cli::add_help_flag(app);
+  for (const auto& [name, run] : commands) gvm::cli::add_help_flag(*app.get_subcommand(name));
   return commands;
-}
-
-// Parses argv into app's options; the exit status when that decides it (help, version,
-// a usage error).
-std::optional<int> parse(CLI::App& app, int argc, char** argv) {
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    return usage();
-  } catch (const CLI::CallForVersion& e) {
-    std::cout << e.what() << "\n";
-    return 0;
-  } catch (const CLI::ArgumentMismatch& e) {
-    // CLI11 says "--threads: 1 required N missing"; a person says it like this.
-    const std::string what = e.what();
-    return gvm::cli::usage_error(what.substr(0, what.find(':')) + " needs a value");
-  } catch (const CLI::ParseError& e) {
-    return gvm::cli::usage_error(e.what());
-  }
-  return std::nullopt;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  set_up_logging();
+  gvm::cli::set_up_logging("gvm");
   CLI::App app{"gvm - exact global visibility maps and setup plans of CAD parts", "gvm"};
   const std::map<std::string, gvm::cli::Run> commands = add_commands(app);
-  if (std::optional<int> exit = parse(app, argc, argv)) return *exit;
+  if (std::optional<int> exit = gvm::cli::parse(app, argc, argv, kUsage)) return *exit;
 
   const std::vector<CLI::App*> chosen = app.get_subcommands();
   const std::string command = chosen.empty() ? std::string() : chosen.front()->get_name();
-  if (command == "help") return usage();  // whatever follows it
-  if (const std::vector<std::string> extra = app.remaining(true); !extra.empty()) return unknown(extra.front());
+  if (command == "help") {
+    std::cout << kUsage;
+    return 0;
+  }  // whatever follows it
+  if (const std::vector<std::string> extra = app.remaining(true); !extra.empty()) return gvm::cli::unknown(extra.front());
   if (command.empty()) return gvm::cli::usage_error("no command given");
   return commands.at(command)();
 }

@@ -2,7 +2,6 @@
 // request's data or from a file under a directory the daemon serves.
 #pragma once
 
-#include <initializer_list>
 #include <string>
 #include <string_view>
 
@@ -24,8 +23,5 @@ struct PartBytes {
 // Fails with INVALID_ARGUMENT (no part, no or wrong format), PERMISSION_DENIED (a path
 // outside the served directories), NOT_FOUND, or RESOURCE_EXHAUSTED (over the size limit).
 StatusOr<PartBytes> load_part(const v1::Part& part, const Limits& limits);
-
-// The lowercase hex SHA-256 of the pieces (each preceded by its length).
-std::string sha256_hex(std::initializer_list<std::string_view> pieces);
 
 }  // namespace gvm::daemon

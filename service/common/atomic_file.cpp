@@ -1,0 +1,25 @@
+#include "atomic_file.h"
+
+#include <fstream>
+#include <system_error>
+
+namespace gvm {
+
+bool write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  // One temporary per target: parts write different files, never the same one at once.
+  std::filesystem::path tmp = path;
+  tmp += ".tmp";
+  std::error_code ec;
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out || !out.write(content.data(), static_cast<std::streamsize>(content.size())) || !out.flush()) {
+      std::filesystem::remove(tmp, ec);
+      return false;
+    }
+  }
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) std::filesystem::remove(tmp, ec);
+  return !ec;
+}
+
+}  // namespace gvm
