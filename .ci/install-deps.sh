@@ -12,6 +12,7 @@ packages=(
   python3-grpcio python3-protobuf
   zlib1g-dev chromium
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
+  libopenmpi-dev openmpi-bin
 )
 # Node.js and npm build the HTML report's script (service/report/web); machines that
 # already have them (from NodeSource, say) keep theirs.

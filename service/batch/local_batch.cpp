@@ -71,13 +71,15 @@ v1::BatchSummary run_jobs(const std::vector<BatchItem>& items, const BatchOption
   auto job = [&] {
     for (;;) {
       size_t i = 0;
+      uint64_t bytes = 0;
       {
+        // Taken and admitted under one lock: parts start in order even when they wait.
         std::lock_guard lock(next_mutex);
         if (next == order.size() || stop.stop_requested()) return;
         i = order[next++];
+        bytes = estimated_memory(items[i]);
+        if (!budget.acquire(bytes, stop)) return;
       }
-      const uint64_t bytes = estimated_memory(items[i]);
-      if (!budget.acquire(bytes, stop)) return;
       outcomes[i] = run_part(items[i], options, stop);
       budget.release(bytes);
       progress.finished(*outcomes[i]);

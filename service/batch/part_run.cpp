@@ -88,6 +88,10 @@ std::optional<PartOutcome> resumed(const v1::BatchResult& before, const std::str
   return std::nullopt;
 }
 
+double unix_seconds() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
 void fail(v1::BatchResult& r, v1::BatchStatus status, const std::string& error) {
   r.set_status(status);
   r.set_error(error);
@@ -164,6 +168,7 @@ PartOutcome run_part(const BatchItem& item, const BatchOptions& options, std::st
   }
 
   const auto start = std::chrono::steady_clock::now();
+  r.set_started_at(unix_seconds());
   PartDeadline deadline(stop, options.part_timeout_seconds);
   compute(item, options, r, deadline.token());
   r.set_seconds(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -174,6 +179,7 @@ PartOutcome run_part(const BatchItem& item, const BatchOptions& options, std::st
       fail(r, v1::BATCH_STATUS_INTERRUPTED, "the batch was stopped while on this part");
     }
   }
+  r.set_finished_at(unix_seconds());
   write_record(options.out, r);
   return {r, false};
 }
