@@ -71,8 +71,11 @@ def main():
         results.append({"configuration": name, "parts": len(parts), "seconds": round(seconds, 1),
                         "parts_per_minute": round(60 * len(parts) / seconds, 2)})
         print("%-48s %7.1f s  %6.2f parts/min" % (name, seconds, 60 * len(parts) / seconds), file=sys.stderr)
-        if per_part is None:  # one thread: the work of each part alone
+        if per_part is None:  # one thread: the work of each part alone, and what it writes
             per_part = sorted(p["seconds"] for p in summary["parts"])
+            files = [os.path.join(out, f) for f in os.listdir(out)]
+            output = {"files": len(files), "bytes": sum(os.path.getsize(f) for f in files),
+                      "plan_bytes_max": max(os.path.getsize(f) for f in files if f.endswith(".plan.json"))}
     shutil.rmtree(work, ignore_errors=True)
 
     distribution = {"parts": len(per_part), "mean_seconds": round(statistics.mean(per_part), 2),
@@ -81,12 +84,13 @@ def main():
                     "sum_seconds": round(sum(per_part), 1)}
     with open(args.out, "w") as f:
         json.dump({"machine": "%d cores" % os.cpu_count(), "configurations": results,
-                   "one_thread_seconds_per_part": distribution}, f, indent=2)
+                   "one_thread_seconds_per_part": distribution, "output": output}, f, indent=2)
         f.write("\n")
     print("| configuration | parts | wall time | parts per minute |\n|---|---:|---:|---:|")
     for r in results:
         print("| %s | %d | %.1f s | %.2f |" % (r["configuration"], r["parts"], r["seconds"], r["parts_per_minute"]))
     print("\none thread, seconds per part: " + json.dumps(distribution))
+    print("output of the batch: " + json.dumps(output))
 
 
 if __name__ == "__main__":

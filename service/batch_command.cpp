@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -30,19 +31,18 @@ struct BatchArgs {
 
 // "8G", "512M", "1.5G", "300000000": bytes.
 bool parse_size(const std::string& text, uint64_t& bytes) {
-  static const std::pair<char, double> kUnits[] = {{'K', 0x1p10}, {'M', 0x1p20}, {'G', 0x1p30}, {'T', 0x1p40}};
-  double scale = 1;
+  static const std::string kUnits = "KMGT";
   std::string number = text;
-  for (const auto& [unit, factor] : kUnits) {
-    if (!number.empty() && (number.back() == unit || number.back() == unit + ('a' - 'A'))) {
-      scale = factor;
+  double scale = 1;
+  if (!number.empty()) {
+    const size_t unit = kUnits.find(static_cast<char>(std::toupper(static_cast<unsigned char>(number.back()))));
+    if (unit != std::string::npos) {
+      scale = std::ldexp(1.0, 10 * static_cast<int>(unit + 1));
       number.pop_back();
     }
   }
   double value = 0;
-  if (!parse_number(number, value) || !(value > 0) || !std::isfinite(value * scale) || value * scale > 0x1p62) {
-    return false;
-  }
+  if (!parse_number(number, value) || !(value > 0) || !(value * scale <= 0x1p62)) return false;
   bytes = static_cast<uint64_t>(value * scale);
   return true;
 }

@@ -1,6 +1,6 @@
 #include "cli_common.h"
 
-#include "common/atomic_file.h"
+#include "common/files.h"
 #include "report/html_report.h"
 
 #include <spdlog/spdlog.h>

@@ -2,11 +2,11 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "batch.h"
+#include "common/files.h"
 #include "csv.h"
 #include "gvm/analysis.h"
 #include "gvm/planner/plan.h"
@@ -21,14 +21,6 @@ struct Entry {
   std::string where;
   v1::BatchPart part;
 };
-
-StatusOr<std::string> read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return NotFound("manifest '" + path.string() + "' cannot be opened");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string trimmed(const std::string& s) {
   const size_t b = s.find_first_not_of(" \t\r");
@@ -93,8 +85,8 @@ StatusOr<std::vector<Entry>> read_csv(const std::string& text) {
 }
 
 StatusOr<std::vector<Entry>> read_entries(const fs::path& manifest) {
-  StatusOr<std::string> text = read_text(manifest);
-  if (!text.ok()) return text.status();
+  const std::optional<std::string> text = read_whole_file(manifest);
+  if (!text) return NotFound("manifest '" + manifest.string() + "' cannot be opened");
   const std::string ext = manifest.extension().string();
   if (ext == ".json") return read_json(*text);
   if (ext == ".csv") return read_csv(*text);

@@ -6,13 +6,11 @@
 #include <chrono>
 #include <condition_variable>
 #include <functional>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "batch.h"
-#include "common/atomic_file.h"
+#include "common/files.h"
 #include "gvm/analysis.h"
 #include "gvm/analysis_proto.h"
 #include "gvm/planner/plan.h"
@@ -26,14 +24,6 @@ namespace fs = std::filesystem;
 // A part started this often that never finished took its process down each time (out of
 // memory, a crash): it is recorded as failed rather than started again.
 constexpr uint32_t kMaxAttempts = 3;
-
-std::optional<std::string> read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
 
 // Stops the part when the batch stops or its time is up, whichever comes first.
 class PartDeadline {
@@ -141,8 +131,8 @@ PartOutcome run_part(const BatchItem& item, const BatchOptions& options, std::st
   r.set_part(item.part.string());
   r.set_host(options.host);
   r.set_input_bytes(item.input_bytes);
-  const std::optional<std::string> part = read_bytes(item.part);
-  const std::optional<std::string> groups = item.groups.empty() ? std::string() : read_bytes(item.groups);
+  const std::optional<std::string> part = read_whole_file(item.part);
+  const std::optional<std::string> groups = item.groups.empty() ? std::string() : read_whole_file(item.groups);
   if (!part || !groups) {
     const fs::path& missing = part ? item.groups : item.part;
     fail(r, v1::BATCH_STATUS_FAILED, std::string(part ? "groups" : "part") + " file '" + missing.string() + "' cannot be opened");

@@ -2,10 +2,9 @@
 
 #include <google/protobuf/util/json_util.h>
 
-#include <fstream>
 #include <sstream>
 
-#include "common/atomic_file.h"
+#include "common/files.h"
 #include "common/sha256.h"
 #include "csv.h"
 #include "gvm/analysis_proto.h"
@@ -15,14 +14,12 @@ namespace gvm::batch {
 namespace fs = std::filesystem;
 
 std::optional<v1::BatchResult> read_record(const fs::path& out, const std::string& name) {
-  std::ifstream in(out / record_file(name), std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::optional<std::string> text = read_whole_file(out / record_file(name));
+  if (!text) return std::nullopt;
   v1::BatchResult result;
   google::protobuf::util::JsonParseOptions lenient;
   lenient.ignore_unknown_fields = true;  // a record of a later version still resumes
-  if (!google::protobuf::util::JsonStringToMessage(text.str(), &result, lenient).ok()) return std::nullopt;
+  if (!google::protobuf::util::JsonStringToMessage(*text, &result, lenient).ok()) return std::nullopt;
   return result;
 }
 

@@ -23,11 +23,12 @@ BAD = os.path.join(SHARED, "data", "bad")
 
 ALL_PARTS = sorted(os.path.join(PARTS, f) for f in os.listdir(PARTS) if not f.endswith(".md"))
 BAD_PARTS = [os.path.join(BAD, "prusa_endstop-block_FLIPPED.off"), os.path.join(BAD, "trimesh_multibody.stl")]
-# Parts that take from a tenth of a second to a few seconds each.
-SMALL_PARTS = [os.path.join(PARTS, f) for f in (
-    "prusa_y-motor-holder.stl", "prusa_adapter-printer.stl", "occt_brep_Pump_TopCover.off",
-    "trimesh_1002_tray_bottom.STL", "trimesh_plate_holes.STL", "occt_sh1.stl", "trimesh_round.stl",
-    "occt_brep_mal_tige.off", "trimesh_20mm-xyz-cube.stl")]
+# Parts that take a tenth of a second to a second each: the tests of the batch's logic
+# (resume, scheduling, MPI, Slurm) run them, under the sanitizers too.
+TINY_PARTS = [os.path.join(PARTS, f) for f in (
+    "occt_brep_Pump_Nut.off", "occt_shape.stl", "trimesh_plate_holes.STL", "trimesh_round.stl",
+    "prusa_endstop-block.stl", "occt_brep_mal_tige.off", "trimesh_20mm-xyz-cube.stl", "prusa_plug-aligner.stl",
+    "trimesh_7_8ths_cube.stl")]
 
 TIMING_KEYS = {"timing", "analysisSeconds", "seconds", "startedAt", "finishedAt", "host"}
 
@@ -112,7 +113,7 @@ class AllSharedParts(BatchCase):
 
 class Resume(BatchCase):
     def test_a_killed_batch_resumed_does_only_the_rest(self):
-        manifest = write_manifest(self.dir, SMALL_PARTS)
+        manifest = write_manifest(self.dir, TINY_PARTS)
         out = os.path.join(self.dir, "out")
         proc = subprocess.Popen([GVM, "batch", manifest, "--out", out, "--threads", "1"],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -129,14 +130,14 @@ class Resume(BatchCase):
         done_before = {n for n, r in before.items() if r["status"] == "BATCH_STATUS_DONE"}
         running = {n for n, r in before.items() if r["status"] == "BATCH_STATUS_RUNNING"}
         self.assertGreaterEqual(len(done_before), 3)
-        self.assertLess(len(done_before), len(SMALL_PARTS), "the batch ended before it was killed")
+        self.assertLess(len(done_before), len(TINY_PARTS), "the batch ended before it was killed")
         self.assertFalse(os.path.exists(os.path.join(out, "summary.json")))
         plans_before = {n: open(os.path.join(out, n + ".plan.json"), "rb").read() for n in done_before}
 
         r = batch(manifest, out, "--threads", "1", "--resume", check=0)
         after = records(out)
         summary = load(os.path.join(out, "summary.json"))
-        self.assertEqual(summary["done"], len(SMALL_PARTS))
+        self.assertEqual(summary["done"], len(TINY_PARTS))
         self.assertEqual(summary["skipped"], len(done_before))
         self.assertIn(f"({len(done_before)} done before)", r.stdout)
         for name in done_before:  # not run again: record and plan untouched
@@ -145,7 +146,7 @@ class Resume(BatchCase):
         for name in set(after) - done_before:
             self.assertEqual(after[name]["status"], "BATCH_STATUS_DONE")
             self.assertEqual(after[name]["attempts"], 2 if name in running else 1)
-        for part in SMALL_PARTS:
+        for part in (TINY_PARTS[0], TINY_PARTS[-1]):  # one done before the kill, one after
             self.assert_plan_equals_gvm_plan(out, part, "--threads", "1")
 
         # Changed options are a different input: everything runs again.
@@ -153,7 +154,7 @@ class Resume(BatchCase):
         self.assertEqual(load(os.path.join(out, "summary.json"))["skipped"], 0)
 
     def test_sigterm_interrupts_the_running_part_and_resume_finishes(self):
-        manifest = write_manifest(self.dir, SMALL_PARTS)
+        manifest = write_manifest(self.dir, TINY_PARTS)
         out = os.path.join(self.dir, "out")
         proc = subprocess.Popen([GVM, "batch", manifest, "--out", out, "--threads", "1"],
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
@@ -169,15 +170,16 @@ class Resume(BatchCase):
         self.assertNotIn("BATCH_STATUS_RUNNING", [r["status"] for r in records(out).values()])
         self.assertIn("--resume goes on", stdout)
         batch(manifest, out, "--threads", "1", "--resume", check=0)
-        self.assertEqual(load(os.path.join(out, "summary.json"))["done"], len(SMALL_PARTS))
+        self.assertEqual(load(os.path.join(out, "summary.json"))["done"], len(TINY_PARTS))
 
 
 class Scheduling(BatchCase):
     def test_largest_first_and_the_memory_bound_keeps_parts_apart(self):
-        parts = SMALL_PARTS[:6]
+        parts = TINY_PARTS[:6]
         manifest = write_manifest(self.dir, parts)
         out = os.path.join(self.dir, "out")
-        # 41 MB: the process's 40 MB and room for one small part's estimate at a time.
+        # 41 MB leaves 1 MB beside the process's 40 MB, less than any part's estimate: one
+        # part at a time (one always runs), however many jobs.
         batch(manifest, out, "--jobs", "3", "--threads", "2", "--max-memory", "41M", check=0)
         runs = sorted(records(out).values(), key=lambda r: r["startedAt"])
         self.assertEqual([r["name"] for r in runs],
@@ -267,7 +269,7 @@ class Manifests(BatchCase):
 @unittest.skipUnless(GVM_MPI and MPIRUN, "Open MPI is not installed (gvm-mpi not built)")
 class Mpi(BatchCase):
     def test_mpirun_gives_the_results_of_gvm_batch(self):
-        parts = SMALL_PARTS[:6] + BAD_PARTS[:1]
+        parts = TINY_PARTS[:6] + BAD_PARTS[:1]
         manifest = write_manifest(self.dir, parts)
         here, there = os.path.join(self.dir, "batch"), os.path.join(self.dir, "mpi")
         batch(manifest, here, "--threads", "1", check=1)
@@ -286,7 +288,7 @@ class Mpi(BatchCase):
         self.assertGreaterEqual(len(ranks), 2, "rank 0 handed out no part")
 
     def test_bad_options_are_refused_by_every_rank(self):
-        manifest = write_manifest(self.dir, SMALL_PARTS[:1])
+        manifest = write_manifest(self.dir, TINY_PARTS[:1])
         r = subprocess.run([MPIRUN, "--allow-run-as-root", "--oversubscribe", "-n", "2", GVM_MPI, "batch", manifest,
                             "--out", os.path.join(self.dir, "o"), "--jobs", "2"], capture_output=True, text=True,
                            timeout=600)
@@ -302,7 +304,7 @@ class Slurm(BatchCase):
     hand): every part planned exactly once, as gvm batch plans it."""
 
     def test_array_tasks_share_the_manifest_out_exactly_once(self):
-        parts = SMALL_PARTS[:5] + BAD_PARTS[:1]
+        parts = TINY_PARTS[:5] + BAD_PARTS[:1]
         os.symlink(PARTS, os.path.join(self.dir, "parts"))
         lines = ["# relative and absolute paths", "parts/" + os.path.basename(parts[0]), ""] + parts[1:]
         with open(os.path.join(self.dir, "m.txt"), "w") as f:
@@ -324,7 +326,7 @@ class Slurm(BatchCase):
 
     @unittest.skipUnless(GVM_MPI and MPIRUN, "Open MPI is not installed (gvm-mpi not built)")
     def test_the_mpi_job_script_runs_gvm_mpi_and_resumes(self):
-        parts = SMALL_PARTS[:4]
+        parts = TINY_PARTS[:4]
         manifest = write_manifest(self.dir, parts)
         out = os.path.join(self.dir, "out")
         env = dict(os.environ, GVM_MPI=GVM_MPI, SLURM_CPUS_PER_TASK="1", OMPI_ALLOW_RUN_AS_ROOT="1",

@@ -1,6 +1,7 @@
-#include "atomic_file.h"
+#include "files.h"
 
 #include <fstream>
+#include <sstream>
 #include <system_error>
 
 namespace gvm {
@@ -20,6 +21,14 @@ bool write_file_atomically(const std::filesystem::path& path, std::string_view c
   std::filesystem::rename(tmp, path, ec);
   if (ec) std::filesystem::remove(tmp, ec);
   return !ec;
+}
+
+std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream bytes;
+  if (!(bytes << in.rdbuf()) && in.peek() != std::ifstream::traits_type::eof()) return std::nullopt;
+  return bytes.str();
 }
 
 }  // namespace gvm
