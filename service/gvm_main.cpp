@@ -104,7 +104,7 @@ STEP options, --threads, -v and -q, applied to every part):
   --out DIR            writes NAME.plan.json and NAME.result.json per part (NAME:
                        the file name without extension, or the manifest's name),
                        then summary.csv and summary.json
-  --jobs N             parts at once, on one pool of --threads (default 1)
+  --jobs N             parts at once, on one pool of --threads (default 2)
   --max-memory SIZE    start a part only while the parts running are expected to
                        fit in SIZE (e.g. 8G); one part always runs
   --part-timeout SEC   stop a part after SEC seconds (recorded as timed out)

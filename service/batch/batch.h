@@ -29,7 +29,7 @@ struct BatchOptions {
   bool write_analysis = false;      // NAME.analysis.json too
   bool resume = false;
   unsigned threads = 1;             // TBB threads of this process
-  unsigned jobs = 1;                // parts at once in this process
+  unsigned jobs = 0;                // parts at once in this process; 0: the runner's default
   uint64_t max_memory = 0;          // bytes; 0: no bound
   double part_timeout_seconds = 0;  // 0: none
   std::string host;                 // recorded in each result

@@ -95,7 +95,12 @@ v1::BatchSummary run_jobs(const std::vector<BatchItem>& items, const BatchOption
 
 }  // namespace
 
-int run_local(const std::vector<BatchItem>& items, const BatchOptions& options, bool quiet) {
+int run_local(const std::vector<BatchItem>& items, const BatchOptions& given, bool quiet) {
+  BatchOptions options = given;
+  // Two parts at once by default: one part's serial phases (reading, validation, planning)
+  // leave cores idle that the other fills (11% faster on the shared parts with 2 threads,
+  // benchmarks/results/batch.json).
+  if (options.jobs == 0) options.jobs = 2;
   const SignalStop signals;  // before any thread starts
   Progress progress(items.size(), std::cout, isatty(STDOUT_FILENO) == 1, quiet);
   const v1::BatchSummary summary = run_jobs(items, options, signals.token(), progress);

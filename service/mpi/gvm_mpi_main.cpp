@@ -44,6 +44,7 @@ bool all_ranks_agree(bool ok, size_t parts) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const gvm::batch::SignalStop signals;  // before MPI starts threads of its own
   int provided = 0, rank = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -81,7 +82,7 @@ int main(int argc, char** argv) {
     else if (app.get_subcommands().empty()) exit = gvm::cli::usage_error("no command given (gvm-mpi batch ...)");
     else exit = batch();
   }
-  if (exit == 0 && items && options.jobs != 1) {
+  if (exit == 0 && items && options.jobs > 1) {
     exit = gvm::cli::usage_error("--jobs: each rank runs one part at a time; start more ranks instead");
   }
   if (exit == 0 && items && options.max_memory != 0) {
@@ -91,7 +92,7 @@ int main(int argc, char** argv) {
   if (!all_ranks_agree(ready, ready ? items->size() : 0)) {
     if (ready) exit = gvm::cli::failure("another rank could not read the manifest or the options (do all ranks see it?)");
   } else if (ready) {
-    exit = gvm::mpi::run_mpi_batch(*items, options, quiet);
+    exit = gvm::mpi::run_mpi_batch(*items, options, quiet, signals);
   }
   std::cout.rdbuf(cout);
   std::cerr.rdbuf(cerr);

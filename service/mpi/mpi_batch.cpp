@@ -12,7 +12,6 @@
 #include <thread>
 
 #include "batch/progress.h"
-#include "batch/signal_stop.h"
 
 namespace gvm::mpi {
 namespace {
@@ -129,14 +128,14 @@ int run_rank0(const std::vector<BatchItem>& items, const BatchOptions& options, 
 
 }  // namespace
 
-int run_mpi_batch(const std::vector<BatchItem>& items, const BatchOptions& given, bool quiet) {
+int run_mpi_batch(const std::vector<BatchItem>& items, const BatchOptions& given, bool quiet,
+                  const batch::SignalStop& signals) {
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   BatchOptions options = given;
   options.host += "/rank " + std::to_string(rank);
   options.jobs = 1;
-  const batch::SignalStop signals;  // before any thread starts
   tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, options.threads);
   if (rank != 0) {
     work(items, options, signals.token());

@@ -7,11 +7,14 @@
 #include <vector>
 
 #include "batch/batch.h"
+#include "batch/signal_stop.h"
 
 namespace gvm::mpi {
 
-// Every rank calls it with the same items and options; returns this rank's exit status
-// (rank 0's says whether every part is done, as gvm batch's).
-int run_mpi_batch(const std::vector<batch::BatchItem>& items, const batch::BatchOptions& options, bool quiet);
+// Every rank calls it with the same items and options; `signals` must have been made
+// before MPI_Init, so that no thread of MPI's takes SIGTERM. Returns this rank's exit
+// status (rank 0's says whether every part is done, as gvm batch's).
+int run_mpi_batch(const std::vector<batch::BatchItem>& items, const batch::BatchOptions& options, bool quiet,
+                  const batch::SignalStop& signals);
 
 }  // namespace gvm::mpi
