@@ -110,7 +110,7 @@ StatusOr<std::vector<uint32_t>> triangles_of(const SolidMesh& mesh, std::span<co
 Analysis::Analysis(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
 const PartSummary& Analysis::part() const { return impl_->summary; }
-const SolidMesh& Analysis::mesh() const { return impl_->part.mesh(); }
+const SolidMesh& Analysis::mesh() const { return impl_->input_mesh; }
 const std::vector<Surface>& Analysis::regions() const { return impl_->regions; }
 const std::vector<Surface>& Analysis::features() const { return impl_->features; }
 const AnalysisTiming& Analysis::timing() const { return impl_->timing; }

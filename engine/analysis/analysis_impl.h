@@ -12,7 +12,8 @@ namespace gvm {
 
 struct Analysis::Impl {
   explicit Impl(Part p) : part(std::move(p)) {}
-  Part part;
+  Part part;               // at its canonical scale (mesh/exact_scale.h)
+  SolidMesh input_mesh;    // the same solid at the file's scale
   PartSummary summary;
   std::vector<Surface> regions, features;
   AnalysisTiming timing;

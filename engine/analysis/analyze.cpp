@@ -17,6 +17,7 @@
 #include "exact/interrupt.h"
 #include "gvm/mesh.h"
 #include "gvm/part.h"
+#include "mesh/exact_scale.h"
 
 namespace gvm {
 namespace {
@@ -32,8 +33,7 @@ std::string part_name(const AnalyzeRequest& request) {
   return request.part_name.empty() ? std::string("part") : request.part_name;
 }
 
-PartSummary summarize(const RawMesh& raw, const Part& part, const std::optional<StepPart>& step) {
-  const SolidMesh& mesh = part.mesh();
+PartSummary summarize(const RawMesh& raw, const Part& part, const SolidMesh& mesh, const std::optional<StepPart>& step) {
   PartSummary out;
   out.source = mesh.source;
   out.input_faces = mesh.input_face_count;
@@ -134,18 +134,26 @@ StatusOr<RawMesh> read_input(const AnalyzeRequest& request, std::optional<StepPa
                             : read_raw_mesh(request.part_path);
 }
 
+// The part as the engine works on it: validated and analysed at its canonical scale (its
+// largest coordinate in [1, 2), exactly: see mesh/exact_scale.h); `scale_exponent` says how
+// far it was scaled.
 StatusOr<Part> read_part(const AnalyzeRequest& request, RawMesh& raw, std::optional<StepPart>& step,
-                         AnalysisTiming& timing) {
+                         AnalysisTiming& timing, int& scale_exponent) {
   auto t0 = Clock::now();
   StatusOr<RawMesh> read = read_input(request, step);
   if (!read.ok()) return read.status();
   raw = std::move(*read);
   timing.read = seconds_since(t0);
+  scale_exponent = mesh_internal::magnitude_exponent(raw.points);
   if (request.max_faces > 0 && raw.faces.size() > request.max_faces) {
     return ResourceExhausted(raw.source + ": " + std::to_string(raw.faces.size()) +
                              " faces, more than the limit of " + std::to_string(request.max_faces));
   }
   interruption_point();
+  if (!mesh_internal::scale_exactly(raw.points, scale_exponent)) {
+    return InvalidArgument(raw.source + ": the coordinates span more than the doubles can hold once the part is "
+                           "scaled to its size (nonzero coordinates more than 2^1000 apart)");
+  }
 
   t0 = Clock::now();
   StatusOr<SolidMesh> solid = build_solid(raw);
@@ -210,11 +218,14 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
   AnalysisTiming timing;
   RawMesh raw;
   std::optional<StepPart> step;
-  StatusOr<Part> part = read_part(request, raw, step, timing);
+  int scale_exponent = 0;
+  StatusOr<Part> part = read_part(request, raw, step, timing, scale_exponent);
   if (!part.ok()) return part.status();
   auto impl = std::make_shared<Analysis::Impl>(std::move(*part));
   impl->options = request.options;
-  impl->summary = summarize(raw, impl->part, step);
+  impl->input_mesh = impl->part.mesh();  // back at the file's scale, for drawing and summaries
+  mesh_internal::scale_exactly(impl->input_mesh.points, -scale_exponent);
+  impl->summary = summarize(raw, impl->part, impl->input_mesh, step);
 
   std::vector<std::span<const uint32_t>> triangles;
   std::vector<Surface> surfaces = surfaces_of(impl->part, triangles);

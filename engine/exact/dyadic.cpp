@@ -59,4 +59,13 @@ double Dyadic::to_double() const {
   return std::ldexp(d, static_cast<int>(exp + k_));
 }
 
+double Dyadic::frexp(int64_t& e) const {
+  e = 0;
+  if (is_zero()) return 0;
+  long exp = 0;
+  const double f = mpz_get_d_2exp(&exp, m_.get_mpz_t());
+  e = static_cast<int64_t>(exp) + k_;
+  return f;
+}
+
 }  // namespace gvm::exact

@@ -7,6 +7,7 @@
 #include <gmpxx.h>
 
 #include <cstdint>
+#include <utility>
 
 #include "gvm/geometry.h"
 
@@ -25,6 +26,9 @@ class Dyadic {
   Sign sign() const { return static_cast<Sign>(sgn(m_)); }
   bool is_zero() const { return sgn(m_) == 0; }
   double to_double() const;
+  // The value as f * 2^e with 0.5 <= |f| < 1 (f truncated to a double; 0 and e = 0 for
+  // zero): for magnitudes beyond the double range.
+  double frexp(int64_t& e) const;
 
  private:
   Dyadic(mpz_class m, int64_t k) : m_(std::move(m)), k_(k) {}

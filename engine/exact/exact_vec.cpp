@@ -1,5 +1,8 @@
 #include "exact/exact_vec.h"
 
+#include <algorithm>
+#include <cfloat>
+#include <climits>
 #include <cmath>
 #include <type_traits>
 
@@ -145,11 +148,24 @@ std::array<double, 3> ExactVec::approx() const {
 }
 
 std::array<double, 3> ExactVec::unit() const {
-  // Exact scaling by a power of two keeps the approximation meaningful for vectors whose
-  // components under- or overflow double range.
+  // The exact coordinates scaled by one power of two so that the largest is in [0.5, 1):
+  // no overflow or underflow whatever the magnitude (a degree-12 construction of large
+  // coordinates exceeds the double range), then normalized.
   auto e = eval<Dyadic>(*this);
-  std::array<double, 3> d = {e[0].to_double(), e[1].to_double(), e[2].to_double()};
-  double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  int64_t exp[3];
+  double f[3];
+  for (int i = 0; i < 3; ++i) f[i] = e[i].frexp(exp[i]);
+  int64_t top = INT64_MIN;
+  for (int i = 0; i < 3; ++i) {
+    if (f[i] != 0) top = std::max(top, exp[i]);
+  }
+  std::array<double, 3> d{};
+  for (int i = 0; i < 3; ++i) {
+    // Components 2^1100 times smaller than the largest become 0: below its rounding.
+    const int64_t shift = std::max<int64_t>(exp[i] - top, -1100);
+    d[i] = f[i] == 0 ? 0 : std::ldexp(f[i], static_cast<int>(shift));
+  }
+  const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   return {d[0] / len, d[1] / len, d[2] / len};
 }
 
@@ -219,20 +235,32 @@ bool same_direction(const ExactVec& a, const ExactVec& b) {
 }
 
 UnitEstimate unit_estimate(const ExactVec& a) {
+  // The filtered coordinates and their errors scaled by one power of two so that the
+  // largest bound is in [1, 2): squares and sums then neither over- nor underflow in a way
+  // that would void the radius (scaling is exact except where a value goes subnormal,
+  // which the added 2^-1074 covers).
   const auto& v = node_of(a).approx;
-  double len2 = 0, err2 = 0;
+  double top = 0;
+  for (int i = 0; i < 3; ++i) top = std::max(top, std::fabs(v[i].value()) + v[i].error());
+  if (!(top > 0) || !std::isfinite(top)) return {a.unit(), 0x1p-40};
+  const int k = std::ilogb(top);
+  double w[3], len2 = 0, err2 = 0;
   for (int i = 0; i < 3; ++i) {
-    len2 += v[i].value() * v[i].value();
-    err2 += v[i].error() * v[i].error();
+    w[i] = std::ldexp(v[i].value(), -k);
+    len2 += w[i] * w[i];
+    const double f = std::ldexp(v[i].error(), -k) + 0x1p-1074;
+    err2 += f * f + DBL_MIN;  // DBL_MIN: whatever the square lost to underflow
   }
-  double len = std::sqrt(len2), err = std::sqrt(err2) * (1 + 0x1p-40);
-  if (!(len > 2 * err) || !std::isfinite(len)) {
+  const double err = std::sqrt(err2) * (1 + 0x1p-40);
+  const double len = std::sqrt(len2);
+  if (!(len > 2 * err)) {
     // The filter cannot locate the direction: fall back to an exact evaluation.
     return {a.unit(), 0x1p-40};
   }
-  // |v/|v| - w/|w|| <= 2 |v - w| / |v| for the exact w within err of v.
+  // |v/|v| - w/|w|| <= 2 |v - w| / |v| for the exact w within err of v; len is within a
+  // few ulps of |v| (it is at least 1/2 here) and 2^-50 covers them.
   double radius = 2 * err / (len - err) + 0x1p-50;
-  return {{v[0].value() / len, v[1].value() / len, v[2].value() / len}, radius};
+  return {{w[0] / len, w[1] / len, w[2] / len}, radius};
 }
 
 }  // namespace gvm::exact

@@ -1,5 +1,7 @@
 #include "exact/predicates.h"
 
+#include <array>
+
 #include "exact/approx.h"
 #include "exact/dyadic.h"
 #include "exact/filtered.h"
@@ -79,6 +81,93 @@ int compare_lex(const Point3& a, const Point3& b) {
     if (a[i] > b[i]) return 1;
   }
   return 0;
+}
+
+namespace {
+
+// (b-a) x (c-a) in number type T.
+template <class T>
+std::array<T, 3> triangle_cross(const Point3& a, const Point3& b, const Point3& c) {
+  T ux = T(b.x) - T(a.x), uy = T(b.y) - T(a.y), uz = T(b.z) - T(a.z);
+  T vx = T(c.x) - T(a.x), vy = T(c.y) - T(a.y), vz = T(c.z) - T(a.z);
+  return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+}
+
+template <class T>
+T dot3(const std::array<T, 3>& u, const std::array<T, 3>& v) {
+  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+// term(T{}, i) summed over [lo, hi) pairwise: the rounding committed while accumulating
+// the filter's error bound then grows with log n, not with n, so Approx::sign's safety
+// factor (a few hundred operations along any path) holds for sums of any length.
+template <class T, class Term>
+T pairwise_sum(size_t lo, size_t hi, const Term& term) {
+  if (hi - lo <= 8) {
+    T sum(0.0);
+    for (size_t i = lo; i < hi; ++i) sum = sum + term(T{}, i);
+    return sum;
+  }
+  const size_t mid = lo + (hi - lo) / 2;
+  return pairwise_sum<T>(lo, mid, term) + pairwise_sum<T>(mid, hi, term);
+}
+
+template <class Term>
+Sign sum_sign(size_t n, const Term& term) {
+  if (auto s = pairwise_sum<Approx>(0, n, term).sign()) return *s;
+  return pairwise_sum<Dyadic>(0, n, term).sign();
+}
+
+}  // namespace
+
+Sign normal_dot(const Point3& a1, const Point3& b1, const Point3& c1, const Point3& a2, const Point3& b2,
+                const Point3& c2) {
+  return filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    return dot3(triangle_cross<T>(a1, b1, c1), triangle_cross<T>(a2, b2, c2));
+  });
+}
+
+// n1 . n2 > k |n1| |n2|, by the signs of d = n1 . n2 and of d^2 - k^2 |n1|^2 |n2|^2:
+//   k > 0:  d > 0 and d^2 > k^2 |n1|^2 |n2|^2
+//   k = 0:  d > 0
+//   k < 0:  d >= 0, or d^2 < k^2 |n1|^2 |n2|^2.
+bool normals_within(const Point3& a1, const Point3& b1, const Point3& c1, const Point3& a2, const Point3& b2,
+                    const Point3& c2, double k) {
+  const Sign sd = normal_dot(a1, b1, c1, a2, b2, c2);
+  if (k == 0) return sd == Sign::kPositive;
+  if (k > 0 && sd != Sign::kPositive) return false;
+  if (k < 0 && sd != Sign::kNegative) return true;
+  const Sign s = filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    const auto n1 = triangle_cross<T>(a1, b1, c1), n2 = triangle_cross<T>(a2, b2, c2);
+    const T d = dot3(n1, n2);
+    return d * d - T(k) * T(k) * dot3(n1, n1) * dot3(n2, n2);
+  });
+  return k > 0 ? s == Sign::kPositive : s == Sign::kNegative;
+}
+
+Sign polygon_area_sign(std::span<const Point3> points, std::span<const uint32_t> polygon, int drop) {
+  const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+  const size_t n = polygon.size();
+  return sum_sign(n, [&](auto tag, size_t k) {
+    using T = decltype(tag);
+    const Point3& p = points[polygon[k]];
+    const Point3& q = points[polygon[(k + 1) % n]];
+    return T(p[i]) * T(q[j]) - T(p[j]) * T(q[i]);
+  });
+}
+
+Sign signed_volume_sign(std::span<const Point3> points, std::span<const Triangle> triangles,
+                        std::span<const uint32_t> which) {
+  return sum_sign(which.size(), [&](auto tag, size_t k) {
+    using T = decltype(tag);
+    const Triangle& t = triangles[which[k]];
+    const Point3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+    const std::array<T, 3> bc = {T(b.y) * T(c.z) - T(b.z) * T(c.y), T(b.z) * T(c.x) - T(b.x) * T(c.z),
+                                 T(b.x) * T(c.y) - T(b.y) * T(c.x)};
+    return T(a.x) * bc[0] + T(a.y) * bc[1] + T(a.z) * bc[2];
+  });
 }
 
 }  // namespace gvm::exact

@@ -5,6 +5,9 @@
 // Nothing outside the exact module compares a floating-point value with an epsilon.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "gvm/geometry.h"
 
 namespace gvm::exact {
@@ -36,5 +39,25 @@ Sign cross_component(const Point3& a, const Point3& b, const Point3& c, int axis
 
 // Sign of (a-b) compared coordinate-wise in order x, y, z (lexicographic comparison).
 int compare_lex(const Point3& a, const Point3& b);
+
+// Sign of ((b1-a1) x (c1-a1)) . ((b2-a2) x (c2-a2)): whether two triangles' normals point
+// the same way (positive), opposite ways, or are orthogonal (zero).
+Sign normal_dot(const Point3& a1, const Point3& b1, const Point3& c1, const Point3& a2, const Point3& b2,
+                const Point3& c2);
+
+// Whether the normals n1, n2 of two non-degenerate triangles make an angle whose cosine is
+// above k (-1 <= k < 1; a user's tolerance, taken as an exact double, so that the
+// result never depends on rounding), i.e. n1 . n2 > k |n1| |n2|, decided exactly through squares.
+bool normals_within(const Point3& a1, const Point3& b1, const Point3& c1, const Point3& a2, const Point3& b2,
+                    const Point3& c2, double k);
+
+// Sign of the signed area of a polygon (indices into `points`, in order) projected along
+// axis `drop` as orient2d projects (the shoelace sum).
+Sign polygon_area_sign(std::span<const Point3> points, std::span<const uint32_t> polygon, int drop);
+
+// Sign of the signed volume of a set of triangles (six times it: the sum of det(a, b, c)),
+// the triangles given by index into `triangles`.
+Sign signed_volume_sign(std::span<const Point3> points, std::span<const Triangle> triangles,
+                        std::span<const uint32_t> which);
 
 }  // namespace gvm::exact

@@ -7,8 +7,6 @@
 #include <numeric>
 #include <string>
 
-#include "exact/approx.h"
-#include "exact/dyadic.h"
 #include "exact/interrupt.h"
 #include "exact/predicates.h"
 #include "gvm/mesh.h"
@@ -39,22 +37,7 @@ bool triangulate_polygon(const std::vector<Point3>& P, const std::vector<uint32_
                          int drop, std::vector<Triangle>& out) {
   const size_t n = f.size();
   // Orientation in the projection: exact signed area (shoelace sum).
-  auto area_sign = [&]() {
-    auto expr = [&](auto tag) {
-      using T = decltype(tag);
-      int i = (drop + 1) % 3, j = (drop + 2) % 3;
-      T sum(0.0);
-      for (size_t k = 0; k < n; ++k) {
-        const Point3& p = P[f[k]];
-        const Point3& q = P[f[(k + 1) % n]];
-        sum = sum + T(p[i]) * T(q[j]) - T(p[j]) * T(q[i]);
-      }
-      return sum;
-    };
-    if (auto s = expr(exact::Approx{}).sign()) return *s;
-    return expr(exact::Dyadic{}).sign();
-  };
-  Sign s = area_sign();
+  Sign s = exact::polygon_area_sign(P, f, drop);
   if (s == Sign::kZero) return false;
   // Simplicity: no two non-adjacent edges touch, adjacent edges meet only at their vertex.
   for (size_t a = 0; a < n; ++a) {
@@ -306,29 +289,12 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
   }
   const uint32_t nt = uint32_t(tris.size());
 
-  // 10. Orientation: exact signed volume per shell (sum of det(a, b, c)); filter first.
+  // 10. Orientation: exact signed volume per shell.
   std::vector<std::vector<uint32_t>> shell_tris(nshell);
   for (uint32_t t = 0; t < nt; ++t) shell_tris[shell_of_face[tri_face[t]]].push_back(t);
-  auto volume_expr = [&](const std::vector<uint32_t>& ts) {
-    return [&](auto tag) {
-      using T = decltype(tag);
-      T sum(0.0);
-      for (uint32_t t : ts) {
-        const Point3 &a = P[tris[t][0]], &b = P[tris[t][1]], &c = P[tris[t][2]];
-        T ax(a.x), ay(a.y), az(a.z), bx(b.x), by(b.y), bz(b.z), cx(c.x), cy(c.y), cz(c.z);
-        sum = sum + (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) +
-                     az * (bx * cy - by * cx));
-      }
-      return sum;
-    };
-  };
-  auto sign_of = [&](const auto& expr) {
-    if (auto s = expr(exact::Approx{}).sign()) return *s;
-    return expr(exact::Dyadic{}).sign();
-  };
   std::vector<bool> is_void(nshell);
   for (uint32_t s = 0; s < nshell; ++s) {
-    Sign v = sign_of(volume_expr(shell_tris[s]));
+    Sign v = exact::signed_volume_sign(P, tris, shell_tris[s]);
     if (v == Sign::kZero)
       return fail("shell " + S(s) + " (containing face " + S(tri_face[shell_tris[s][0]]) +
                   ") encloses zero volume");
@@ -337,7 +303,7 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
   {
     std::vector<uint32_t> all(nt);
     std::iota(all.begin(), all.end(), 0u);
-    if (sign_of(volume_expr(all)) != Sign::kPositive)
+    if (exact::signed_volume_sign(P, tris, all) != Sign::kPositive)
       return fail("faces point inward (total signed volume is not positive)");
   }
 

@@ -187,26 +187,6 @@ ConvexHull convex_hull(std::span<const Point3> points, std::span<const uint32_t>
   return Builder(points).run(use);
 }
 
-namespace {
-
-// Sign of ((b - a) x (c - a)) . ((q1 - q0) x (q2 - q0)).
-Sign normal_dot(const Point3& a, const Point3& b, const Point3& c, const Point3& q0,
-                const Point3& q1, const Point3& q2) {
-  return exact::filtered_sign([&](auto tag) {
-    using T = decltype(tag);
-    auto cross = [](const Point3& o, const Point3& u, const Point3& w) {
-      T ux = T(u.x) - T(o.x), uy = T(u.y) - T(o.y), uz = T(u.z) - T(o.z);
-      T wx = T(w.x) - T(o.x), wy = T(w.y) - T(o.y), wz = T(w.z) - T(o.z);
-      return std::array<T, 3>{uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx};
-    };
-    auto n = cross(a, b, c);
-    auto m = cross(q0, q1, q2);
-    return n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-  });
-}
-
-}  // namespace
-
 uint32_t hull_extreme_vertex(const ConvexHull& hull, std::span<const Point3> points,
                              const Point3& a, const Point3& b, const Point3& c,
                              uint32_t start) {
@@ -232,7 +212,7 @@ uint32_t hull_extreme_vertex(const ConvexHull& hull, std::span<const Point3> poi
     // All neighbors tie: v is inside a flat face orthogonal to n, the maximal face when
     // its outward normal agrees with n.
     const Triangle& f = hull.facets[hull.vertex_facet[v]];
-    if (normal_dot(a, b, c, points[f[0]], points[f[1]], points[f[2]]) != Sign::kNegative)
+    if (exact::normal_dot(a, b, c, points[f[0]], points[f[1]], points[f[2]]) != Sign::kNegative)
       return v;
     // The minimal face: walk its vertices (all tie) to one with an improving neighbor.
     std::vector<uint32_t> plateau{v};

@@ -36,43 +36,6 @@ struct UnionFind {
   }
 };
 
-// Is the angle between the normals of triangles t1 and t2 smaller than theta, with
-// cos_theta = cos(theta)? The angle is a user tolerance, not a geometric decision, but
-// we still decide it exactly against the double constant cos_theta (taken as exact), so
-// that the result does not depend on rounding: angle < theta <=> n1.n2 > k |n1| |n2|,
-// i.e. with d = n1.n2 and k = cos_theta:
-//   k > 0:  d > 0 and d^2 > k^2 |n1|^2 |n2|^2
-//   k = 0:  d > 0
-//   k < 0:  d >= 0, or d^2 < k^2 |n1|^2 |n2|^2.
-bool normals_within(const Point3& a1, const Point3& b1, const Point3& c1, const Point3& a2,
-                    const Point3& b2, const Point3& c2, double k) {
-  auto normal = [](auto tag, const Point3& a, const Point3& b, const Point3& c) {
-    using T = decltype(tag);
-    T ux = T(b.x) - T(a.x), uy = T(b.y) - T(a.y), uz = T(b.z) - T(a.z);
-    T vx = T(c.x) - T(a.x), vy = T(c.y) - T(a.y), vz = T(c.z) - T(a.z);
-    return std::array<T, 3>{uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
-  };
-  auto dot = [&](auto tag) {
-    auto n1 = normal(tag, a1, b1, c1);
-    auto n2 = normal(tag, a2, b2, c2);
-    return n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-  };
-  Sign sd = exact::filtered_sign(dot);
-  if (k == 0) return sd == Sign::kPositive;
-  if (k > 0 && sd != Sign::kPositive) return false;
-  if (k < 0 && sd != Sign::kNegative) return true;
-  Sign s = exact::filtered_sign([&](auto tag) {
-    using T = decltype(tag);
-    auto n1 = normal(tag, a1, b1, c1);
-    auto n2 = normal(tag, a2, b2, c2);
-    T d = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-    T l1 = n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2];
-    T l2 = n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2];
-    return d * d - T(k) * T(k) * l1 * l2;
-  });
-  return k > 0 ? s == Sign::kPositive : s == Sign::kNegative;
-}
-
 // Builds a CSR table from (key, value) pairs.
 void build_csr(size_t keys, const std::vector<std::pair<uint32_t, uint32_t>>& pairs,
                std::vector<uint32_t>& offset, std::vector<uint32_t>& values) {
@@ -261,7 +224,7 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
         if (u <= t || tri_group[u] != kNone) continue;
         if (I.hull[t] != I.hull[u] || I.region[t] != I.region[u]) continue;
         if (uf.find(t) == uf.find(u)) continue;
-        if (normals_within(I.P(t, 0), I.P(t, 1), I.P(t, 2), I.P(u, 0), I.P(u, 1), I.P(u, 2), k))
+        if (exact::normals_within(I.P(t, 0), I.P(t, 1), I.P(t, 2), I.P(u, 0), I.P(u, 1), I.P(u, 2), k))
           uf.unite(t, u);
       }
     }

@@ -108,7 +108,8 @@ struct AnalysisTiming {
 class Analysis {
  public:
   const PartSummary& part() const;
-  // The validated solid the maps were computed on (input face numbering), e.g. to draw it.
+  // The validated solid the maps were computed on, at the file's scale (the engine works on
+  // it scaled by a power of two, see README "Exactness"), input face numbering: to draw it.
   const SolidMesh& mesh() const;
   const std::vector<Surface>& regions() const;
   const std::vector<Surface>& features() const;

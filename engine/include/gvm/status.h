@@ -51,7 +51,11 @@ template <class T>
 class [[nodiscard]] StatusOr {
  public:
   StatusOr(T value) : v_(std::move(value)) {}            // NOLINT: implicit by design
-  StatusOr(Status status) : v_(std::move(status)) {}     // NOLINT: implicit by design
+  // An OK status is no value: it becomes an internal error, so that ok() and status()
+  // never disagree (a caller returning status() on !ok() would report success).
+  StatusOr(Status status)                                 // NOLINT: implicit by design
+      : v_(status.ok() ? Status(StatusCode::kInternal, "no value and no error (a StatusOr built from an OK status)")
+                       : std::move(status)) {}
 
   bool ok() const { return std::holds_alternative<T>(v_); }
   const Status& status() const {
