@@ -89,14 +89,36 @@ std::string lower(std::string s) {
   return s;
 }
 
-// Collapses vertices with exactly equal coordinates onto the first one, renumbering the
-// survivors in input order, and checks that coordinates are finite.
-Status weld(RawMesh& m) {
+std::string shortest(double d) {
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, d);
+  return std::string(buf, r.ptr);
+}
+
+// Every coordinate finite, before any geometry; the message names the vertex (input
+// numbering), the coordinate and the first face using it. The magnitude of finite
+// coordinates is analyze()'s business (it scales the part exactly, see mesh/exact_scale.h).
+Status check_coordinates(const RawMesh& m) {
   for (size_t i = 0; i < m.points.size(); ++i) {
-    const auto& p = m.points[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      return Bad(m.source, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    for (int a = 0; a < 3; ++a) {
+      const double c = m.points[i][a];
+      if (std::isfinite(c)) continue;
+      std::string value = std::string(1, "xyz"[a]) + " = " + shortest(c);
+      for (size_t f = 0; f < m.faces.size(); ++f) {
+        if (std::find(m.faces[f].begin(), m.faces[f].end(), uint32_t(i)) != m.faces[f].end()) {
+          value += ", in face " + std::to_string(f);
+          break;
+        }
+      }
+      return Bad(m.source, "vertex " + std::to_string(i) + " has a non-finite coordinate (" + value + ")");
+    }
   }
+  return Status::Ok();
+}
+
+// Collapses vertices with exactly equal coordinates onto the first one, renumbering the
+// survivors in input order.
+Status weld(RawMesh& m) {
   struct H {
     size_t operator()(const Point3& p) const {
       auto b = [](double d) { return std::bit_cast<uint64_t>(d == 0 ? 0.0 : d); };
@@ -385,9 +407,7 @@ Status read_ply(std::string_view s, RawMesh& m) {
   int format = -1;
   std::vector<PlyElement> elements;
   size_t body = std::string_view::npos;
-  size_t consumed = 0;
   while (c.line(l)) {
-    consumed += 0;
     auto tok = split(l);
     if (tok.empty()) continue;
     if (tok[0] == "format" && tok.size() >= 2) {
@@ -515,6 +535,7 @@ StatusOr<RawMesh> read_raw_mesh(std::string_view bytes, MeshFormat format, const
   if (m.faces.empty()) return InvalidArgument(source + ": the file holds no faces");
   if (m.faces.size() > kMaxFaces) return ResourceExhausted(source + ": more than 50 million faces");
   if (st = check_indices(m); !st.ok()) return st;
+  if (st = check_coordinates(m); !st.ok()) return st;
   if (st = weld(m); !st.ok()) return st;
   return m;
 }

@@ -150,7 +150,20 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
                           box[t].hi[2] - box[t].lo[2]});
   }
   mean_ext /= double(nt);
+  // Coordinates near the double range (a span of 1e308 - -1e308) make the differences
+  // overflow: the grid is then laid on the coordinates halved, which keeps every
+  // difference finite (cell coordinates only need to be monotone in the coordinate).
   double span = std::max({ghi[0] - glo[0], ghi[1] - glo[1], ghi[2] - glo[2]});
+  const double scale = std::isfinite(span) && std::isfinite(mean_ext) ? 1.0 : 0.5;
+  if (scale != 1) {
+    span = std::max({ghi[0] * scale - glo[0] * scale, ghi[1] * scale - glo[1] * scale,
+                     ghi[2] * scale - glo[2] * scale});
+    mean_ext = 0;  // each term divided first: the sum stays finite
+    for (const Box& b : box) {
+      mean_ext += std::max({b.hi[0] * scale - b.lo[0] * scale, b.hi[1] * scale - b.lo[1] * scale,
+                            b.hi[2] * scale - b.lo[2] * scale}) / double(nt);
+    }
+  }
   double cell = std::max(mean_ext, span / 2048.0);
   if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
 
@@ -160,25 +173,38 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
   std::vector<std::pair<uint64_t, uint32_t>> entries;
   for (int attempt = 0;; ++attempt) {
     int64_t n[3];
-    for (int ax = 0; ax < 3; ++ax)
-      n[ax] = std::clamp<int64_t>(int64_t((ghi[ax] - glo[ax]) / cell) + 1, 1, 1 << 20);
+    for (int ax = 0; ax < 3; ++ax) {
+      // At most 2^20 cells an axis; compared as doubles, never cast beyond int64.
+      const double extent = (ghi[ax] * scale - glo[ax] * scale) / cell;
+      n[ax] = extent < double(1 << 20) ? std::max<int64_t>(int64_t(extent) + 1, 1) : int64_t(1) << 20;
+    }
     auto idx = [&](double x, int ax) {
-      double f = std::floor((x - glo[ax]) / cell);
+      double f = std::floor((x * scale - glo[ax] * scale) / cell);
       return std::clamp<int64_t>(f < 0 ? 0 : (f > double(n[ax] - 1) ? n[ax] - 1 : int64_t(f)),
                                  0, n[ax] - 1);
     };
     entries.clear();
     bool too_many = false;
+    // A budget of entries; a box over too many cells (one long sliver among small
+    // triangles can cover millions) stops the attempt before it is stored, and the next
+    // attempt doubles the cell. The last attempt keeps every entry, whatever their number:
+    // by then the cell is 2^21 times span / 2048 and a box covers at most 2 cells an axis.
+    const bool last = attempt > 20;
+    const uint64_t budget = 32 * uint64_t(nt) + 1024;
     for (size_t t = 0; t < nt && !too_many; ++t) {
       int64_t l[3], h[3];
       for (int ax = 0; ax < 3; ++ax) l[ax] = idx(box[t].lo[ax], ax), h[ax] = idx(box[t].hi[ax], ax);
+      const uint64_t cells = uint64_t(h[0] - l[0] + 1) * uint64_t(h[1] - l[1] + 1) * uint64_t(h[2] - l[2] + 1);
+      if (!last && entries.size() + cells > budget) {
+        too_many = true;
+        break;
+      }
       for (int64_t x = l[0]; x <= h[0]; ++x)
         for (int64_t y = l[1]; y <= h[1]; ++y)
           for (int64_t z = l[2]; z <= h[2]; ++z)
             entries.push_back({(uint64_t(x) << 42) | (uint64_t(y) << 21) | uint64_t(z), uint32_t(t)});
-      if (entries.size() > 32 * nt + 1024) too_many = true;
     }
-    if (!too_many || attempt > 20) {
+    if (!too_many) {
       tbb::parallel_sort(entries.begin(), entries.end());
       interruption_point();  // a cancelled sort stops half done
       // Each entry's cell ends where the key changes.

@@ -23,6 +23,15 @@ namespace {
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
+// A non-negative integral double as digits, however large (a cast past 2^64 is undefined).
+std::string integer_text(double d) {
+  if (d < 0x1p63) return std::to_string(static_cast<uint64_t>(d));
+  std::ostringstream text;
+  text.precision(17);
+  text << d;
+  return text.str();
+}
+
 struct UnionFind {
   std::vector<uint32_t> parent;
   explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
@@ -370,7 +379,7 @@ StatusOr<std::map<std::string, std::vector<uint32_t>>> parse_face_groups(
         return InvalidArgument(where + ": entry " + std::to_string(i) +
                                " is not a non-negative integer face index");
       if (d >= static_cast<double>(face_count))
-        return InvalidArgument(where + ": face " + std::to_string(static_cast<uint64_t>(d)) +
+        return InvalidArgument(where + ": face " + integer_text(d) +
                                " does not exist (the part has " + std::to_string(face_count) +
                                " faces)");
       const uint32_t f = static_cast<uint32_t>(d);

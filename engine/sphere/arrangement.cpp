@@ -117,7 +117,9 @@ void Arrangement::build_with_bridges(std::span<const ArrangementArc> arcs,
     // A near vertex of the root component: short bridges cross few arcs. Any one would do.
     uint32_t best = UINT32_MAX;
     double best_d = 1e300;
-    for (double h = 1e-3; best == UINT32_MAX; h *= 4) {
+    // Half-width 4 covers the sphere: the search ends even for an estimate that is not a
+    // number (none should be: unit estimates are certified at any magnitude).
+    for (double h = 1e-3; best == UINT32_MAX && h <= 4; h *= 4) {
       Box query;
       for (int i = 0; i < 3; ++i) query.lo[i] = est[v].unit[i] - h, query.hi[i] = est[v].unit[i] + h;
       for (uint32_t t : target_tree.overlapping(query)) {
@@ -127,6 +129,7 @@ void Arrangement::build_with_bridges(std::span<const ArrangementArc> arcs,
         if (d < best_d) best_d = d, best = w;
       }
     }
+    if (best == UINT32_MAX) best = targets.front();
     const ExactVec& a = vertices_[v].p;
     const ExactVec& b = vertices_[best].p;
     if (exact::parallel(a, b)) {

@@ -137,7 +137,9 @@ void CoverageOverlay::Impl::visit_face(uint32_t f, const RunningCoverage& runnin
                                        Scratch& scratch,
                                        const std::function<void(const Cell&)>& visit) const {
   const auto& half = arr.half_edges();
-  auto& [face_cov, extra, cov] = scratch;
+  // Plain references, not a structured binding: lambdas may not capture those before
+  // clang 16 (the fuzz preset builds with Debian's clang 14).
+  auto &face_cov = scratch.face_cov, &extra = scratch.extra, &cov = scratch.cov;
   running.list(face_cov);
   if (all_kinds) visit({CellKind::kFace, f, direction_inside_face(arr, f), face_cov});
   auto visit_vertex = [&](uint32_t v) {

@@ -6,8 +6,8 @@
 
 #include <chrono>
 #include <condition_variable>
-#include <mutex>
 #include <iostream>
+#include <mutex>
 #include <thread>
 
 #include "progress.h"
@@ -28,8 +28,11 @@ class MemoryBudget {
   // False when the wait ended by a stop request.
   bool acquire(uint64_t bytes, std::stop_token stop) {
     std::unique_lock lock(mutex_);
-    return ready_.wait(lock, stop, [&] { return bound_ == 0 || used_ == 0 || used_ + bytes <= bound_; }) &&
-           (used_ += bytes, true);
+    if (!ready_.wait(lock, stop, [&] { return bound_ == 0 || used_ == 0 || used_ + bytes <= bound_; })) {
+      return false;
+    }
+    used_ += bytes;
+    return true;
   }
   void release(uint64_t bytes) {
     {
