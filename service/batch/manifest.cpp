@@ -85,6 +85,7 @@ StatusOr<std::vector<Entry>> read_csv(const std::string& text) {
 }
 
 StatusOr<std::vector<Entry>> read_entries(const fs::path& manifest) {
+  if (fs::is_directory(manifest)) return InvalidArgument("manifest '" + manifest.string() + "' is a directory, not a file");
   const std::optional<std::string> text = read_whole_file(manifest);
   if (!text) return NotFound("manifest '" + manifest.string() + "' cannot be opened");
   const std::string ext = manifest.extension().string();

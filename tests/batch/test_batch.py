@@ -256,6 +256,9 @@ class Manifests(BatchCase):
             r = batch(path, out, check=2)
             self.assertIn(message, r.stderr, name)
             self.assertFalse(os.path.exists(out), name)
+        r = subprocess.run([GVM, "batch", self.dir, "--out", os.path.join(self.dir, "o")], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("is a directory, not a file", r.stderr)
         manifest = write_manifest(self.dir, [part])
         for options, message in [((), "needs --out"), (("--out", self.dir, "--jobs", "0"), "--jobs needs"),
                                  (("--out", self.dir, "--max-memory", "lots"), "--max-memory needs"),
