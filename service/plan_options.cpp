@@ -18,13 +18,20 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-bool parse_head(const std::string& text, v1::ProbeHead* head) {
-  const std::vector<std::string> f = split(text, ':');
-  double v[5];
-  if (f.size() != 5) return false;
-  for (int i = 0; i < 5; ++i) {
+// Exactly N numbers separated by `sep`.
+template <size_t N>
+bool parse_numbers(const std::string& text, char sep, double (&v)[N]) {
+  const std::vector<std::string> f = split(text, sep);
+  if (f.size() != N) return false;
+  for (size_t i = 0; i < N; ++i) {
     if (!parse_number(f[i], v[i])) return false;
   }
+  return true;
+}
+
+bool parse_head(const std::string& text, v1::ProbeHead* head) {
+  double v[5];
+  if (!parse_numbers(text, ':', v)) return false;
   head->set_a_min_degrees(v[0]);
   head->set_a_max_degrees(v[1]);
   head->set_b_min_degrees(v[2]);
@@ -47,12 +54,8 @@ bool parse_axis(const std::string& text, v1::Vec3* out) {
     out->set_z(t == "z" ? sign : 0);
     return true;
   }
-  const std::vector<std::string> f = split(text, ',');
   double v[3];
-  if (f.size() != 3) return false;
-  for (int i = 0; i < 3; ++i) {
-    if (!parse_number(f[i], v[i])) return false;
-  }
+  if (!parse_numbers(text, ',', v)) return false;
   out->set_x(v[0]);
   out->set_y(v[1]);
   out->set_z(v[2]);
