@@ -13,6 +13,7 @@ packages=(
   zlib1g-dev chromium
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
   libopenmpi-dev openmpi-bin
+  libembree-dev
 )
 # Node.js and npm build the HTML report's script (service/report/web); machines that
 # already have them (from NodeSource, say) keep theirs.

@@ -1,19 +1,19 @@
 // gvm_compare: the effective Minkowski envelope against convex decomposition, the way the
 // paper's Tables 1-2 compare them, on real parts.
 //
-//   gvm_compare [PART...] [--largest K] [--all-features] [--no-convex]
+//   gvm_compare [PART...] [--largest K | --all-features | --feature NAME...] [--no-convex]
 //               [--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE] [--svg FILE]
 //   gvm_compare --from-json FILE [--csv FILE] [--svg FILE]
 //
 // Without parts: every part of $GVM_SHARED_DIR/data/parts (default ../shared). For each
-// part, the K (default 3) features with the largest |S| * |O_S| (or every feature), each
+// part, the K (default 3) features with the largest |S| * |O_S| (or every feature, or the
+// features named, e.g. F17), each
 // computed by both methods: #S, #O_S, #GOM, #Arrng, #GVM, seconds and peak memory, and
 // whether the two GVMs are equal. Convex decomposition is skipped on features with more
 // than N pairs (default: no limit). Prints a table; --csv and --json write the same rows
 // (JSON: protobuf's mapping of gvm.v1.Comparison); --svg plots seconds and #Arrng of both
 // methods against |S| * |O_S|. --from-json reads the rows of an earlier run instead of
 // computing them (to redraw the table, CSV or plot).
-#include <google/protobuf/util/json_util.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -22,7 +22,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <ostream>
 #include <string>
 #include <thread>
@@ -32,6 +31,7 @@
 #include "gvm/part.h"
 #include "gvm/v1/benchmark.pb.h"
 #include "support/comparison_plot.h"
+#include "support/shared_parts.h"
 #include "visibility/surface_visibility.h"
 
 namespace {
@@ -41,6 +41,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Options {
   std::vector<std::string> parts;
+  std::vector<std::string> features;  // by name; empty: the largest
   size_t largest = 3;
   bool all_features = false, convex = true;
   uint64_t convex_max_pairs = UINT64_MAX;
@@ -49,7 +50,7 @@ struct Options {
 };
 
 constexpr const char* kUsage =
-    "usage: gvm_compare [PART...] [--largest K] [--all-features] [--no-convex] "
+    "usage: gvm_compare [PART...] [--largest K | --all-features | --feature NAME...] [--no-convex] "
     "[--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE] [--svg FILE]\n"
     "       gvm_compare --from-json FILE [--csv FILE] [--svg FILE]\n";
 
@@ -92,21 +93,6 @@ gvm::v1::MethodRun run(const gvm::Part& part, const std::vector<uint32_t>& s,
     *gvm_out = *vis.gvm;
   }
   return r;
-}
-
-std::vector<std::string> default_parts() {
-  const char* env = std::getenv("GVM_SHARED_DIR");
-  const fs::path dir = fs::path(env ? env : "../shared") / "data" / "parts";
-  std::vector<std::string> parts;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string ext = e.path().extension().string();
-    if (ext == ".stl" || ext == ".STL" || ext == ".off" || ext == ".obj" || ext == ".ply") {
-      parts.push_back(e.path().string());
-    }
-  }
-  std::sort(parts.begin(), parts.end());
-  return parts;
 }
 
 void print_row(const gvm::v1::SurfaceComparison& c) {
@@ -159,7 +145,13 @@ bool compare(const Options& opt, gvm::v1::Comparison& out) {
     std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
       return a.feature->triangles.size() * a.o_s > b.feature->triangles.size() * b.o_s;
     });
-    if (!opt.all_features && candidates.size() > opt.largest) candidates.resize(opt.largest);
+    if (!opt.features.empty()) {
+      std::erase_if(candidates, [&](const Candidate& c) {
+        return std::find(opt.features.begin(), opt.features.end(), c.feature->name) == opt.features.end();
+      });
+    } else if (!opt.all_features && candidates.size() > opt.largest) {
+      candidates.resize(opt.largest);
+    }
     for (const Candidate& c : candidates) {
       gvm::v1::SurfaceComparison* row = out.add_surfaces();
       row->set_model(fs::path(path).filename().string());
@@ -178,22 +170,6 @@ bool compare(const Options& opt, gvm::v1::Comparison& out) {
       }
       print_row(*row);
     }
-  }
-  return true;
-}
-
-bool read_json(const std::string& path, gvm::v1::Comparison& out) {
-  std::ifstream in(path);
-  if (!in) {
-    std::fprintf(stderr, "gvm_compare: cannot read %s\n", path.c_str());
-    return false;
-  }
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto status = google::protobuf::util::JsonStringToMessage(text, &out);
-  if (!status.ok()) {
-    std::fprintf(stderr, "gvm_compare: %s is not a gvm.v1.Comparison: %s\n", path.c_str(),
-                 std::string(status.message()).c_str());
-    return false;
   }
   return true;
 }
@@ -224,14 +200,8 @@ bool write_outputs(const Options& opt, const gvm::v1::Comparison& out) {
     }
   };
   write(opt.csv, [&](std::ostream& f) { write_csv(out, f); });
-  write(opt.json, [&](std::ostream& f) {
-    std::string text;
-    google::protobuf::util::JsonPrintOptions print;
-    print.add_whitespace = true;
-    (void)google::protobuf::util::MessageToJsonString(out, &text, print);
-    f << text;
-  });
   write(opt.svg, [&](std::ostream& f) { f << gvm::bench::comparison_plot_svg(out); });
+  if (!opt.json.empty()) ok = gvm::bench::write_json(out, opt.json) && ok;
   return ok;
 }
 
@@ -250,6 +220,7 @@ int main(int argc, char** argv) {
     };
     if (a == "--largest") opt.largest = std::stoul(next());
     else if (a == "--all-features") opt.all_features = true;
+    else if (a == "--feature") opt.features.push_back(next());
     else if (a == "--no-convex") opt.convex = false;
     else if (a == "--convex-max-pairs") opt.convex_max_pairs = std::stoull(next());
     else if (a == "--threads") opt.threads = std::stoul(next());
@@ -270,11 +241,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "gvm_compare: --from-json takes no parts\n%s", kUsage);
       return 2;
     }
-    if (!read_json(opt.from_json, out)) return 2;
+    if (!gvm::bench::read_json(opt.from_json, out)) return 2;
     print_header();
     for (const auto& row : out.surfaces()) print_row(row);
   } else {
-    if (opt.parts.empty()) opt.parts = default_parts();
+    if (opt.parts.empty()) opt.parts = gvm::bench::shared_parts();
     const unsigned threads = opt.threads ? opt.threads : std::thread::hardware_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     out.set_threads(threads);

@@ -10,15 +10,12 @@
 // an arc, or a 2-cell thinner than the lattice), the same with --planar-normal, and the
 // planning time against the analysis time. Prints a Markdown table; --json writes the
 // rows (protobuf's mapping of gvm.v1.PlannerBenchmark).
-#include <google/protobuf/util/json_util.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -27,6 +24,7 @@
 #include "gvm/planner/plan.h"
 #include "gvm/v1/benchmark.pb.h"
 #include "set_cover.h"
+#include "support/shared_parts.h"
 
 namespace {
 
@@ -146,14 +144,7 @@ int main(int argc, char** argv) {
       opt.parts.push_back(a);
     }
   }
-  if (opt.parts.empty()) {
-    const char* env = std::getenv("GVM_SHARED_DIR");
-    const fs::path dir = fs::path(env ? env : "../shared") / "data" / "parts";
-    for (const auto& e : fs::directory_iterator(dir)) {
-      if (e.path().extension() != ".md") opt.parts.push_back(e.path().string());
-    }
-    std::sort(opt.parts.begin(), opt.parts.end());
-  }
+  if (opt.parts.empty()) opt.parts = gvm::bench::shared_parts();
   gvm::v1::PlannerBenchmark bench;
   bench.set_machine("2 cores, Debian 12");
   bench.set_threads(opt.threads);
@@ -162,12 +153,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s done\n", part.c_str());
   }
   print_table(bench);
-  if (!opt.json.empty()) {
-    std::string out;
-    google::protobuf::util::JsonPrintOptions json_options;
-    json_options.add_whitespace = true;
-    (void)google::protobuf::util::MessageToJsonString(bench, &out, json_options);
-    std::ofstream(opt.json) << out;
-  }
+  if (!opt.json.empty() && !gvm::bench::write_json(bench, opt.json)) return 1;
   return 0;
 }
