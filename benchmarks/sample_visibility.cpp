@@ -46,10 +46,10 @@ struct Options {
   std::vector<std::string> from_json;  // earlier runs' rows, merged instead of computed
 };
 
-// A feature as both sides see it: its triangles, their normals, its exact GVM.
+// A feature as both sides see it: its triangles, its exact LVM and GVM.
 struct FeatureTruth {
   std::vector<uint32_t> triangles;
-  std::vector<Vec> normals;
+  const gvm::DirectionSet* lvm = nullptr;
   const gvm::DirectionSet* gvm = nullptr;
 };
 
@@ -60,17 +60,9 @@ std::vector<FeatureTruth> feature_truths(const gvm::Analysis& analysis) {
   std::vector<FeatureTruth> out;
   for (const gvm::Surface& f : analysis.features()) {
     FeatureTruth truth;
+    truth.lvm = &f.maps.lvm;
     truth.gvm = f.maps.gvm ? &*f.maps.gvm : nullptr;
-    for (uint32_t face : f.faces) {
-      for (uint32_t t : of_face[face]) {
-        const auto& tri = mesh.triangles[t];
-        const gvm::Point3 &a = mesh.points[tri[0]], &b = mesh.points[tri[1]], &c = mesh.points[tri[2]];
-        const Vec e1 = {b.x - a.x, b.y - a.y, b.z - a.z}, e2 = {c.x - a.x, c.y - a.y, c.z - a.z};
-        truth.triangles.push_back(t);
-        truth.normals.push_back({e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                                 e1[0] * e2[1] - e1[1] * e2[0]});
-      }
-    }
+    for (uint32_t face : f.faces) truth.triangles.insert(truth.triangles.end(), of_face[face].begin(), of_face[face].end());
     out.push_back(std::move(truth));
   }
   return out;
@@ -81,16 +73,6 @@ bool has_point_or_arc(const gvm::DirectionSet& gvm) {
     if (cell.dimension() < 2) return true;
   }
   return false;
-}
-
-// Could u lie in the GVM? Only where no triangle clearly faces away (the exact GVM lies in
-// the closed hemispheres of the normals; the margin covers the normals' rounding).
-bool may_face(const FeatureTruth& f, const Vec& u) {
-  for (const Vec& n : f.normals) {
-    const double d = n[0] * u[0] + n[1] * u[1] + n[2] * u[2];
-    if (d < -1e-9 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])) return false;
-  }
-  return true;
 }
 
 // Within this angle of a GVM's boundary a sampler's verdict is the floats' (its start
@@ -113,7 +95,8 @@ void judge(const std::vector<FeatureTruth>& features, const std::vector<Vec>& un
     if (!truth.gvm) return;
     uint64_t false_seen = 0, false_missed = 0, near = 0;
     for (uint32_t d = 0; d < units.size(); ++d) {
-      const bool in_gvm = may_face(truth, units[d]) && truth.gvm->contains(exact[d]);
+      // The GVM lies in the LVM, a convex set whose test is cheap.
+      const bool in_gvm = truth.lvm->contains(exact[d]) && truth.gvm->contains(exact[d]);
       const bool was_seen = std::binary_search(seen[f].begin(), seen[f].end(), d);
       if (in_gvm == was_seen) continue;
       if (std::abs(truth.gvm->approx_signed_clearance(units[d])) <= kBoundaryRadians) {
