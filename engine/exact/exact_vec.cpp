@@ -1,6 +1,7 @@
 #include "exact/exact_vec.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cfloat>
 #include <climits>
 #include <cmath>
@@ -30,33 +31,57 @@ struct ExactVec::Node {
   Point3 leaf;
   std::shared_ptr<const Node> a, b;
   V3<Approx> approx;  // filtered value, computed once at construction
+  // Exact value, computed the first time a predicate needs it: an arrangement vertex is
+  // tested against many arcs, and degenerate input makes those tests exact.
+  mutable std::atomic<const V3<Dyadic>*> exact{nullptr};
 
+  Node() = default;
+  Node(const Node&) = delete;
+  Node& operator=(const Node&) = delete;
+  ~Node() { delete exact.load(std::memory_order_relaxed); }
+
+  // The filtered value by copy, the exact one by reference to the cache.
   template <class T>
-  V3<T> eval() const;
+  decltype(auto) eval() const {
+    if constexpr (std::is_same_v<T, Approx>) {
+      return approx;
+    } else {
+      return exact_value();
+    }
+  }
+  const V3<Dyadic>& exact_value() const;
+  V3<Dyadic> compute_exact() const;
 };
 
-template <class T>
-V3<T> ExactVec::Node::eval() const {
-  if constexpr (std::is_same_v<T, Approx>) return approx;
+V3<Dyadic> ExactVec::Node::compute_exact() const {
   switch (op) {
     case Op::kLeaf:
-      return {T(leaf.x), T(leaf.y), T(leaf.z)};
+      return {Dyadic(leaf.x), Dyadic(leaf.y), Dyadic(leaf.z)};
     case Op::kAdd: {
-      auto x = a->eval<T>(), y = b->eval<T>();
+      const auto &x = a->exact_value(), &y = b->exact_value();
       return {x[0] + y[0], x[1] + y[1], x[2] + y[2]};
     }
     case Op::kSub: {
-      auto x = a->eval<T>(), y = b->eval<T>();
+      const auto &x = a->exact_value(), &y = b->exact_value();
       return {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
     }
     case Op::kNeg: {
-      auto x = a->eval<T>();
+      const auto& x = a->exact_value();
       return {-x[0], -x[1], -x[2]};
     }
     case Op::kCross:
-      return cross3(a->eval<T>(), b->eval<T>());
+      return cross3(a->exact_value(), b->exact_value());
   }
   return {};
+}
+
+const V3<Dyadic>& ExactVec::Node::exact_value() const {
+  if (const V3<Dyadic>* cached = exact.load(std::memory_order_acquire)) return *cached;
+  auto* fresh = new V3<Dyadic>(compute_exact());
+  const V3<Dyadic>* expected = nullptr;
+  if (exact.compare_exchange_strong(expected, fresh, std::memory_order_acq_rel)) return *fresh;
+  delete fresh;  // another thread cached the same value first
+  return *expected;
 }
 
 namespace {
@@ -69,7 +94,7 @@ const ExactVec::Node& zero_node() {
 const ExactVec::Node& node_of(const ExactVec& v) { return v.node() ? *v.node() : zero_node(); }
 
 template <class T>
-V3<T> eval(const ExactVec& v) {
+decltype(auto) eval(const ExactVec& v) {
   return node_of(v).eval<T>();
 }
 
@@ -151,7 +176,7 @@ std::array<double, 3> ExactVec::unit() const {
   // The exact coordinates scaled by one power of two so that the largest is in [0.5, 1):
   // no overflow or underflow whatever the magnitude (a degree-12 construction of large
   // coordinates exceeds the double range), then normalized.
-  auto e = eval<Dyadic>(*this);
+  const auto& e = eval<Dyadic>(*this);
   int64_t exp[3];
   double f[3];
   for (int i = 0; i < 3; ++i) f[i] = e[i].frexp(exp[i]);
@@ -178,7 +203,7 @@ Sign sign_dot(const ExactVec& a, const ExactVec& b) {
   if (orthogonal_by_construction(a, b)) return Sign::kZero;
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
-    auto x = eval<T>(a), y = eval<T>(b);
+    const auto &x = eval<T>(a), &y = eval<T>(b);
     return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
   });
 }
@@ -187,7 +212,7 @@ Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
   if (same_node(a, b) || same_node(b, c) || same_node(a, c)) return Sign::kZero;
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
-    auto x = eval<T>(a), y = eval<T>(b), z = eval<T>(c);
+    const auto &x = eval<T>(a), &y = eval<T>(b), &z = eval<T>(c);
     auto w = cross3(y, z);
     return x[0] * w[0] + x[1] * w[1] + x[2] * w[2];
   });
@@ -196,7 +221,7 @@ Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c) {
 Sign sign_sin2_angle_minus(const ExactVec& a, const ExactVec& b, double s2) {
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
-    auto x = eval<T>(a), y = eval<T>(b);
+    const auto &x = eval<T>(a), &y = eval<T>(b);
     auto w = cross3(x, y);
     T aa = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], bb = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
     return (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) - T(s2) * aa * bb;
@@ -206,7 +231,7 @@ Sign sign_sin2_angle_minus(const ExactVec& a, const ExactVec& b, double s2) {
 Sign sign_cos2_angle_minus(const ExactVec& a, const ExactVec& b, double s2) {
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
-    auto x = eval<T>(a), y = eval<T>(b);
+    const auto &x = eval<T>(a), &y = eval<T>(b);
     T d = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
     T aa = x[0] * x[0] + x[1] * x[1] + x[2] * x[2], bb = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
     return d * d - T(s2) * aa * bb;
@@ -224,7 +249,7 @@ bool is_zero(const ExactVec& a) {
     undecided |= !s;
   }
   if (!undecided) return true;
-  auto e = eval<Dyadic>(a);  // one exact evaluation for all three coordinates
+  const auto& e = eval<Dyadic>(a);  // one exact evaluation for all three coordinates
   return e[0].is_zero() && e[1].is_zero() && e[2].is_zero();
 }
 

@@ -3,21 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sphere/d3.h"
+
 namespace gvm {
 namespace {
 
-using D3 = std::array<double, 3>;
-
-D3 cross(const D3& a, const D3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-D3 normalized(const D3& a) {
-  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  return {a[0] / n, a[1] / n, a[2] / n};
-}
-
-D3 negated(const D3& a) { return {-a[0], -a[1], -a[2]}; }
+using namespace sphere;  // D3
 
 }  // namespace
 

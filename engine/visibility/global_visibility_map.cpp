@@ -1,22 +1,26 @@
 #include "visibility/global_visibility_map.h"
 
 #include <spdlog/spdlog.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 
 #include "exact/interrupt.h"
 #include "sphere/arrangement.h"
 #include "sphere/image_overlay.h"
+#include "visibility/clip_window.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
 #include "visibility/effective_minkowski_envelope.h"
 #include "visibility/occluded_directions.h"
 #include "visibility/occluder_beam.h"
 #include "visibility/occlusion_probe.h"
+#include "visibility/redundant_faces.h"
 
 namespace gvm {
 namespace {
@@ -46,13 +50,34 @@ class SumVertices {
   std::unordered_map<uint64_t, ExactVec> cache_;
 };
 
-// A back-facing face projects to the convex polygon to the left of its edges (its
-// vertices run counter-clockwise around the outward normal, seen from outside).
-bool face_covers(const std::vector<ExactVec>& v, const ExactVec& r) {
+// Whether u lies inside, outside or (none) on the boundary of a back-facing face: it
+// projects to the convex polygon to the left of its edges (its vertices run
+// counter-clockwise around the outward normal, seen from outside).
+std::optional<bool> face_contains(const std::vector<ExactVec>& v, const ExactVec& u) {
+  bool on_boundary = false;
   for (size_t i = 0; i < v.size(); ++i) {
-    if (exact::sign_det(v[i], v[(i + 1) % v.size()], r) != Sign::kPositive) return false;
+    const Sign s = exact::sign_det(v[i], v[(i + 1) % v.size()], u);
+    if (s == Sign::kNegative) return false;
+    on_boundary = on_boundary || s == Sign::kZero;
   }
+  if (on_boundary) return std::nullopt;
   return true;
+}
+
+// The envelope faces that can change the union inside the window: faces inside larger
+// ones (redundant_faces.h), and faces that meet the window in zero area, change it nowhere.
+std::vector<uint32_t> faces_that_matter(const std::vector<std::vector<ExactVec>>& faces,
+                                        const ClipWindow* clip) {
+  std::vector<uint8_t> left_out = redundant_faces(faces);
+  if (clip) {
+    tbb::parallel_for(size_t{0}, faces.size(),
+                      [&](size_t i) { left_out[i] = left_out[i] || clip->misses(faces[i]); });
+  }
+  std::vector<uint32_t> kept;
+  for (uint32_t i = 0; i < faces.size(); ++i) {
+    if (!left_out[i]) kept.push_back(i);
+  }
+  return kept;
 }
 
 // The closed occluded region and the reference direction it was labelled from.
@@ -65,8 +90,8 @@ struct Occlusion {
 // Sec. 4): the envelope's faces are the cells, a group's arcs its border chain.
 Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
                              std::span<const uint32_t> o, const DirectionWindow& window,
-                             std::vector<ExactVec>& circles, const std::vector<ExactVec>& points,
-                             GlobalOcclusionStatistics* stats) {
+                             const ClipWindow* clip, std::vector<ExactVec>& circles,
+                             const std::vector<ExactVec>& points, GlobalOcclusionStatistics* stats) {
   const EffectiveMinkowskiEnvelope eme =
       compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true, &window);
   spdlog::debug("global occlusion: |S| {} |O| {}: {} tentative faces ({} outside the LVM), {} kept, "
@@ -85,13 +110,17 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
     faces.push_back(std::move(v));
   }
+  if (clip) circles.insert(circles.end(), clip->normals().begin(), clip->normals().end());
+  const std::vector<uint32_t> kept = faces_that_matter(faces, clip);
+  spdlog::debug("global occlusion: {} of {} envelope faces lie inside larger ones or miss the window {}",
+                faces.size() - kept.size(), faces.size(), clip ? "around the LVM" : "(none)");
   const ExactVec r = sphere::generic_direction(circles, points);
   OccludingCells cells;
-  cells.count = faces.size();
-  cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[i][0]).unit; };
+  cells.count = kept.size();
+  cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[kept[i]][0]).unit; };
   cells.boundary = [&](std::span<const uint32_t> members) {
     std::vector<EnvelopeFace> group;
-    for (uint32_t i : members) group.push_back(eme.faces[i]);
+    for (uint32_t i : members) group.push_back(eme.faces[kept[i]]);
     std::vector<ArrangementArc> arcs;
     for (const EnvelopeBorderEdge& e : border_chain(group)) {
       const ExactVec &a = sum.at(e.q0, e.p0), &b = sum.at(e.q1, e.p1);
@@ -99,7 +128,17 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     }
     return arcs;
   };
-  cells.covers_reference = [&](uint32_t i) { return face_covers(faces[i], r); };
+  cells.covers_reference = [&](uint32_t i) { return face_contains(faces[kept[i]], r) == true; };
+  cells.window = clip;
+  cells.coverage_at = [&](std::span<const uint32_t> members, const ExactVec& u) -> std::optional<int> {
+    int coverage = 0;
+    for (uint32_t i : members) {
+      const std::optional<bool> inside = face_contains(faces[kept[i]], u);
+      if (!inside) return std::nullopt;
+      coverage += *inside;
+    }
+    return coverage;
+  };
   return {occluded_directions(cells, r), r};
 }
 
@@ -201,6 +240,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   if (stats) stats->occluders_in_beam = beam.size();
   if (beam.empty()) return lvm;
   const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
+  const std::optional<ClipWindow> clip = ClipWindow::around(lvm);
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   sphere::add_image(lvm, kLvm, arcs, points);
@@ -212,7 +252,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const auto union_start = std::chrono::steady_clock::now();
   const auto [occluded, r] =
       method == OcclusionMethod::kEffectiveMinkowskiEnvelope
-          ? envelope_occlusion(mesh, s, beam, window, circles, point_dirs, stats)
+          ? envelope_occlusion(mesh, s, beam, window, clip ? &*clip : nullptr, circles, point_dirs, stats)
           : convex_decomposition_occlusion(mesh, s, beam, window, circles, point_dirs, stats);
   spdlog::debug("global occlusion: closure of the occluded directions: {} boundary arcs, {:.2f} s",
                 occluded.boundary.size(),

@@ -39,7 +39,18 @@ sphere::Region occluded_directions(const OccludingCells& cells, const exact::Exa
       members.push_back(order[k].second);
       covering += cells.covers_reference(order[k].second);
     }
-    groups[g] = sphere::positive_region(cells.boundary(members), reference, covering);
+    std::vector<sphere::ArrangementArc> arcs = cells.boundary(members);
+    if (const ClipWindow* w = cells.window) {
+      std::optional<std::vector<sphere::ArrangementArc>> clipped;
+      if (const std::optional<int> corner = cells.coverage_at(members, w->corner(0))) {
+        clipped = w->clip(arcs, *corner);
+      }
+      if (clipped) {
+        arcs = std::move(*clipped);
+        if (!w->contains_strictly(reference)) covering = 0;
+      }
+    }
+    groups[g] = sphere::positive_region(arcs, reference, covering);
   });
   interruption_point();  // groups left undone when cancelled
   return sphere::region_union(std::move(groups), reference);

@@ -10,10 +10,12 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "sphere/region_union.h"
+#include "visibility/clip_window.h"
 
 namespace gvm {
 
@@ -26,6 +28,10 @@ struct OccludingCells {
   std::function<std::vector<sphere::ArrangementArc>(std::span<const uint32_t>)> boundary;
   // Whether cell i covers the reference direction (which lies on none of their arcs).
   std::function<bool(uint32_t)> covers_reference;
+  // Optional: each group clipped to a window around the LVM (clip_window.h), which then
+  // needs the coverage of a group at a direction (none when it lies on a cell's boundary).
+  const ClipWindow* window = nullptr;
+  std::function<std::optional<int>(std::span<const uint32_t>, const exact::ExactVec&)> coverage_at;
 };
 
 sphere::Region occluded_directions(const OccludingCells& cells, const exact::ExactVec& reference);

@@ -1,0 +1,201 @@
+#include "visibility/clip_window.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "sphere/d3.h"
+
+namespace gvm {
+namespace {
+
+using exact::ExactVec;
+using namespace sphere;  // D3
+ExactVec exact_of(const D3& a) { return ExactVec::from_point({a[0], a[1], a[2]}); }
+
+// The circles through L's boundary (inward unit normals, in counter-clockwise order
+// around L) and a direction inside L towards which they are pushed out.
+struct Outline {
+  std::vector<D3> inward;
+  D3 centre{};
+  std::vector<ExactVec> vertices;      // every vertex of L, checked strictly inside
+  std::vector<sphere::Arc> arcs;       // every arc of L, checked minor
+};
+
+Outline outline(const sphere::SphericalImage& lvm) {
+  Outline out;
+  const size_t cells = lvm.faces().size() + lvm.curves().size() + lvm.points().size();
+  if (lvm.is_full_sphere() || cells != 1) return out;
+  D3 sum{};
+  if (!lvm.faces().empty()) {
+    const sphere::Face& f = lvm.faces()[0];
+    if (!f.convex || f.loops.size() != 1) return out;
+    for (const sphere::Arc& arc : f.loops[0].arcs) {
+      if (arc.full) return {};
+      out.inward.push_back(arc.normal.unit());
+      out.vertices.push_back(arc.start);
+      out.arcs.push_back(arc);
+      sum = add(sum, arc.start.unit());
+    }
+  } else if (!lvm.curves().empty()) {
+    // A thin band along the arc: below it, past its end, above it, before its start.
+    const sphere::Arc& arc = lvm.curves()[0];
+    if (arc.full) return out;
+    const D3 n = arc.normal.unit(), a = arc.start.unit(), b = arc.end.unit();
+    out.inward = {n, normalized(cross(b, n)), negated(n), normalized(cross(n, a))};
+    out.vertices = {arc.start, arc.end};
+    out.arcs = {arc};
+    sum = add(a, b);
+  } else {
+    // A small square around the point.
+    const D3 u = lvm.points()[0].unit();
+    const D3 helper = std::fabs(u[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
+    const D3 n1 = normalized(cross(u, helper)), n2 = cross(u, n1);
+    out.inward = {n2, negated(n1), negated(n2), n1};
+    out.vertices = {lvm.points()[0]};
+    sum = u;
+  }
+  if (sum == D3{}) return {};
+  out.centre = normalized(sum);
+  return out;
+}
+
+}  // namespace
+
+ClipWindow::ClipWindow(std::vector<ExactVec> normals) : normals_(std::move(normals)) {
+  const size_t k = normals_.size();
+  for (size_t i = 0; i < k; ++i) corners_.push_back(exact::cross(normals_[(i + k - 1) % k], normals_[i]));
+}
+
+bool ClipWindow::proper() const {
+  const size_t k = normals_.size();
+  if (k < 3) return false;
+  for (size_t i = 0; i < k; ++i) {
+    for (size_t j = 0; j < k; ++j) {
+      if (j != i && j != (i + k - 1) % k && exact::sign_dot(normals_[j], corners_[i]) != Sign::kPositive) {
+        return false;
+      }
+    }
+    if (exact::sign_det(corners_[i], corners_[(i + 1) % k], normals_[i]) != Sign::kPositive) return false;
+  }
+  return true;
+}
+
+std::optional<ClipWindow> ClipWindow::around(const sphere::SphericalImage& lvm) {
+  const Outline l = outline(lvm);
+  if (l.inward.empty()) return std::nullopt;
+  for (const sphere::Arc& arc : l.arcs) {
+    if (exact::sign_det(arc.start, arc.end, arc.normal) != Sign::kPositive) return std::nullopt;
+  }
+  // About one and six degrees; the smaller margin keeps W (and the work) smaller, the
+  // larger one is for cells whose vertices lie near the edge of their centre's hemisphere.
+  for (const double margin : {0.02, 0.1}) {
+    std::vector<ExactVec> normals;
+    for (const D3& m : l.inward) normals.push_back(exact_of(add(m, l.centre, margin)));
+    ClipWindow window(std::move(normals));
+    bool inside = window.proper();
+    for (const ExactVec& v : l.vertices) inside = inside && window.contains_strictly(v);
+    if (inside) return window;
+  }
+  return std::nullopt;
+}
+
+bool ClipWindow::contains_strictly(const ExactVec& u) const {
+  for (const ExactVec& w : normals_) {
+    if (exact::sign_dot(w, u) != Sign::kPositive) return false;
+  }
+  return true;
+}
+
+bool ClipWindow::misses(std::span<const ExactVec> polygon) const {
+  for (const ExactVec& w : normals_) {
+    bool any_positive = false;
+    for (const ExactVec& v : polygon) any_positive = any_positive || exact::sign_dot(w, v) == Sign::kPositive;
+    if (!any_positive) return true;
+  }
+  return false;
+}
+
+namespace {
+
+// Where an arc crosses the boundary of W, and how the coverage inside W changes there
+// when W's boundary is walked counter-clockwise.
+struct Crossing {
+  ExactVec x;
+  int delta;
+};
+
+}  // namespace
+
+std::optional<std::vector<sphere::ArrangementArc>> ClipWindow::clip(
+    std::span<const sphere::ArrangementArc> arcs, int corner_coverage) const {
+  const size_t k = normals_.size();
+  std::vector<std::vector<Crossing>> on_edge(k);
+  std::vector<sphere::ArrangementArc> out;
+  std::vector<Sign> from(k), to(k);
+  for (const sphere::ArrangementArc& arc : arcs) {
+    bool from_inside = true, to_inside = true;
+    for (size_t j = 0; j < k; ++j) {
+      from[j] = exact::sign_dot(normals_[j], arc.from);
+      to[j] = exact::sign_dot(normals_[j], arc.to);
+      if (from[j] == Sign::kZero || to[j] == Sign::kZero) return std::nullopt;
+      from_inside = from_inside && from[j] == Sign::kPositive;
+      to_inside = to_inside && to[j] == Sign::kPositive;
+    }
+    if (from_inside && to_inside) {
+      out.push_back(arc);
+      continue;
+    }
+    // A minor arc meets convex W in one piece: it enters at most once and leaves at most once.
+    std::optional<ExactVec> entry, exit;
+    for (size_t j = 0; j < k; ++j) {
+      if (from[j] == to[j]) continue;
+      const ExactVec& w = normals_[j];
+      // (from x to) x w = (from . w) to - (to . w) from: on the arc.
+      const bool entering = from[j] == Sign::kNegative;
+      ExactVec x = entering ? exact::cross(w, arc.normal) : exact::cross(arc.normal, w);
+      bool on_boundary = true;
+      for (size_t l = 0; l < k && on_boundary; ++l) {
+        if (l == j) continue;
+        const Sign s = exact::sign_dot(normals_[l], x);
+        if (s == Sign::kZero) return std::nullopt;  // through a corner
+        on_boundary = s == Sign::kPositive;
+      }
+      if (!on_boundary) continue;
+      // Walking W's edge forwards crosses from the arc's right to its left where it leaves.
+      on_edge[j].push_back({x, entering ? -arc.weight : arc.weight});
+      (entering ? entry : exit) = std::move(x);
+    }
+    const bool consistent = from_inside || to_inside
+                                ? entry.has_value() != from_inside && exit.has_value() != to_inside
+                                : entry.has_value() == exit.has_value();
+    if (!consistent) return std::nullopt;
+    if (!entry && !exit) continue;  // outside W
+    out.push_back({entry ? *entry : arc.from, exit ? *exit : arc.to, arc.normal, arc.layer, arc.weight});
+  }
+  // W's boundary, its pieces weighted by the coverage just inside.
+  int coverage = corner_coverage;
+  for (size_t j = 0; j < k; ++j) {
+    const ExactVec& w = normals_[j];
+    std::vector<Crossing>& crossings = on_edge[j];
+    std::sort(crossings.begin(), crossings.end(), [&](const Crossing& a, const Crossing& b) {
+      return exact::sign_det(a.x, b.x, w) == Sign::kPositive;
+    });
+    const ExactVec* piece_start = &corners_[j];
+    auto piece_to = [&](const ExactVec& end) {
+      if (coverage != 0 && exact::sign_det(*piece_start, end, w) == Sign::kPositive) {
+        out.push_back({*piece_start, end, w, 0, coverage});
+      }
+      piece_start = &end;
+    };
+    for (const Crossing& c : crossings) {
+      piece_to(c.x);
+      coverage += c.delta;
+    }
+    piece_to(corners_[(j + 1) % k]);
+  }
+  if (coverage != corner_coverage) return std::nullopt;
+  return out;
+}
+
+}  // namespace gvm
