@@ -4,13 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "sphere/d3.h"
 #include "sphere/set_operations.h"
 
 namespace gvm::sphere {
 namespace {
 
 using exact::ExactVec;
-using D3 = std::array<double, 3>;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -49,11 +49,6 @@ bool face_holds_cap(const Face& f, const ExactVec& c, double s2) {
 // --- doubles, for searching ---
 
 D3 unit(const ExactVec& v) { return exact::unit_estimate(v).unit; }
-double dot(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-D3 cross(const D3& a, const D3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const D3& a) { return std::sqrt(dot(a, a)); }
 double angle(const D3& a, const D3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
 
 // Angular position of unit v along the circle with unit normal n, from unit `from`, in

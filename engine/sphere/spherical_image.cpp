@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sphere/d3.h"
 #include "sphere/point_in_face.h"
 
 namespace gvm::sphere {
@@ -108,11 +109,6 @@ bool face_equal(const Face& a, const Face& b) {
 
 // --- doubles, for output only ---
 
-using D3 = std::array<double, 3>;
-D3 cross_d(const D3& a, const D3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot_d(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Angle of the arc in radians, in the range fixed by the exact classification.
 double arc_angle(const Arc& arc) {
@@ -120,7 +116,7 @@ double arc_angle(const Arc& arc) {
   Sign s = exact::sign_det(arc.normal, arc.start, arc.end);
   if (s == Sign::kZero) return exact::same_direction(arc.start, arc.end) ? 0.0 : kPi;
   D3 a = arc.start.unit(), b = arc.end.unit(), c = arc.normal.unit();
-  double t = std::atan2(dot_d(c, cross_d(a, b)), dot_d(a, b));
+  double t = std::atan2(dot(c, cross(a, b)), dot(a, b));
   if (s == Sign::kPositive) return std::clamp(t, 0.0, kPi);
   if (t < 0) t += 2 * kPi;
   return std::clamp(t, kPi, 2 * kPi);
@@ -136,8 +132,8 @@ double face_area(const Face& f) {
       const Arc& in = l.arcs[i];
       const Arc& out = l.arcs[(i + 1) % n];
       D3 v = out.start.unit();
-      D3 t_in = cross_d(in.normal.unit(), v), t_out = cross_d(out.normal.unit(), v);
-      total -= std::atan2(dot_d(v, cross_d(t_in, t_out)), dot_d(t_in, t_out));
+      D3 t_in = cross(in.normal.unit(), v), t_out = cross(out.normal.unit(), v);
+      total -= std::atan2(dot(v, cross(t_in, t_out)), dot(t_in, t_out));
     }
   }
   return std::max(0.0, std::min(4 * kPi, total));

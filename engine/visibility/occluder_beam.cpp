@@ -5,11 +5,12 @@
 #include <cmath>
 
 #include "exact/interrupt.h"
+#include "sphere/d3.h"
 
 namespace gvm {
 namespace {
 
-using D3 = std::array<double, 3>;
+using namespace sphere;  // D3
 
 // Pruning margins. kMargin is the angle (radians) within which a face is always kept; any
 // positive value gives the same GVM. kSlack absorbs the rounding of the bounds below
@@ -18,7 +19,6 @@ using D3 = std::array<double, 3>;
 constexpr double kMargin = 1e-4;
 constexpr double kSlack = 1e-9;
 
-double dot(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 struct Ball {
   D3 c;
