@@ -11,6 +11,7 @@ namespace {
 
 using exact::ExactVec;
 using namespace sphere;  // D3
+
 ExactVec exact_of(const D3& a) { return ExactVec::from_point({a[0], a[1], a[2]}); }
 
 // The circles through L's boundary (inward unit normals, in counter-clockwise order

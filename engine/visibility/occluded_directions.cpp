@@ -23,6 +23,20 @@ uint64_t morton(const std::array<double, 3>& u) {
   return code;
 }
 
+// A group's arcs and its coverage at the reference, clipped to the window when the arcs
+// meet its boundary generically (left whole otherwise: either gives the same GVM).
+void clip_group(const OccludingCells& cells, std::span<const uint32_t> members,
+                const exact::ExactVec& reference, std::vector<sphere::ArrangementArc>& arcs,
+                int& covering) {
+  const ClipWindow& w = *cells.window;
+  const std::optional<int> corner = cells.coverage_at(members, w.corner(0));
+  if (!corner) return;
+  std::optional<std::vector<sphere::ArrangementArc>> clipped = w.clip(arcs, *corner);
+  if (!clipped) return;
+  arcs = std::move(*clipped);
+  if (!w.contains_strictly(reference)) covering = 0;
+}
+
 }  // namespace
 
 sphere::Region occluded_directions(const OccludingCells& cells, const exact::ExactVec& reference) {
@@ -40,16 +54,7 @@ sphere::Region occluded_directions(const OccludingCells& cells, const exact::Exa
       covering += cells.covers_reference(order[k].second);
     }
     std::vector<sphere::ArrangementArc> arcs = cells.boundary(members);
-    if (const ClipWindow* w = cells.window) {
-      std::optional<std::vector<sphere::ArrangementArc>> clipped;
-      if (const std::optional<int> corner = cells.coverage_at(members, w->corner(0))) {
-        clipped = w->clip(arcs, *corner);
-      }
-      if (clipped) {
-        arcs = std::move(*clipped);
-        if (!w->contains_strictly(reference)) covering = 0;
-      }
-    }
+    if (cells.window) clip_group(cells, members, reference, arcs, covering);
     groups[g] = sphere::positive_region(arcs, reference, covering);
   });
   interruption_point();  // groups left undone when cancelled

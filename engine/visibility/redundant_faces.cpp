@@ -46,10 +46,7 @@ Estimate estimate(const std::vector<exact::ExactVec>& face) {
   }
   for (size_t i = 0; i < e.u.size(); ++i) e.n.push_back(cross(e.u[i], e.u[(i + 1) % e.u.size()]));
   for (size_t i = 1; i + 1 < e.u.size(); ++i) {
-    const D3 a = {e.u[i][0] - e.u[0][0], e.u[i][1] - e.u[0][1], e.u[i][2] - e.u[0][2]};
-    const D3 b = {e.u[i + 1][0] - e.u[0][0], e.u[i + 1][1] - e.u[0][1], e.u[i + 1][2] - e.u[0][2]};
-    const D3 c = cross(a, b);
-    e.area += std::sqrt(dot(c, c)) / 2;
+    e.area += norm(cross(add(e.u[i], e.u[0], -1), add(e.u[i + 1], e.u[0], -1))) / 2;
   }
   e.certain = true;
   return e;
@@ -59,9 +56,7 @@ Estimate estimate(const std::vector<exact::ExactVec>& face) {
 // (x . axis) on its plane; the grid's lines are great circles.
 struct CubeFace {
   D3 axis, e1, e2;
-  D3 point(double s, double t) const {
-    return {s * e1[0] + t * e2[0] + axis[0], s * e1[1] + t * e2[1] + axis[1], s * e1[2] + t * e2[2] + axis[2]};
-  }
+  D3 point(double s, double t) const { return add(add(axis, e1, s), e2, t); }
 };
 
 const std::array<CubeFace, 6> kCube = {{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
