@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -41,21 +42,50 @@ namespace {
 // (Found with `nm` and `objdump` on the installed static libraries, then in the sources.)
 // The maintainers agree: "CBC itself is still not 100% stable with multiple threads"
 // (coin-or/Cbc#223); CbcMain needs a -DCBC_THREAD_SAFE build (coin-or/Cbc#332). So every
-// use of Cbc/Clp here holds this mutex. The generators used here re-initialise their state
+// use of Cbc/Clp here takes the one SolverTurn. The generators used here re-initialise their state
 // on each call and none draws on CoinDrand48, so a result does not depend on earlier solves.
-std::timed_mutex& solver_mutex() {
-  static std::timed_mutex mutex;
-  return mutex;
-}
-
-// Waits for the solver, still honouring a cancel or the deadline while others solve.
-std::unique_lock<std::timed_mutex> lock_solver(CoverStop& stop) {
-  std::unique_lock<std::timed_mutex> lock(solver_mutex(), std::defer_lock);
-  while (!lock.try_lock_for(std::chrono::milliseconds(20))) {
-    if (stop.should_stop()) break;
+//
+// A turn is a flag under a mutex rather than a std::timed_mutex held throughout: waiting
+// for it still honours a cancel or the deadline, and every lock is a plain mutex that
+// ThreadSanitizer sees (libstdc++'s timed_mutex::try_lock_for calls
+// pthread_mutex_clocklock, which GCC 12's TSan does not intercept).
+class SolverTurn {
+ public:
+  // Waits for the solver; owns() is false when `stop` asked to stop first.
+  explicit SolverTurn(CoverStop& stop) {
+    Shared& s = shared();
+    std::unique_lock lock(s.mutex);
+    while (s.busy) {
+      if (stop.should_stop()) return;
+      s.freed.wait_for(lock, std::chrono::milliseconds(20));
+    }
+    s.busy = owns_ = true;
   }
-  return lock;
-}
+  ~SolverTurn() {
+    if (!owns_) return;
+    Shared& s = shared();
+    {
+      std::lock_guard lock(s.mutex);
+      s.busy = false;
+    }
+    s.freed.notify_one();
+  }
+  SolverTurn(const SolverTurn&) = delete;
+  SolverTurn& operator=(const SolverTurn&) = delete;
+  bool owns() const { return owns_; }
+
+ private:
+  struct Shared {
+    std::mutex mutex;
+    std::condition_variable freed;
+    bool busy = false;
+  };
+  static Shared& shared() {
+    static Shared s;
+    return s;
+  }
+  bool owns_ = false;
+};
 
 OsiClpSolverInterface make_lp(const CoverInstance& instance) {
   const int rows = static_cast<int>(instance.item_count());
@@ -194,8 +224,8 @@ StatusOr<CbcCoverResult> solve_cover_with_cbc(const CoverInstance& instance,
   result.chosen = start;
   result.lower_bound = lower_bound;
   result.lp_bound = lower_bound;
-  const std::unique_lock<std::timed_mutex> lock = lock_solver(stop);
-  if (!lock.owns_lock() || stop.should_stop()) return result;
+  const SolverTurn turn(stop);
+  if (!turn.owns() || stop.should_stop()) return result;
 
   SearchOutcome outcome;
   try {

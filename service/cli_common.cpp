@@ -84,6 +84,7 @@ void add_step_options(CLI::App& command, v1::StepOptions& step) {
     step.set_features(v == "brep" ? v1::STEP_FEATURES_BREP : v1::STEP_FEATURES_AUTO);
     return true;
   });
+  command.add_flag_callback("--group-holes", [&step] { step.set_group_holes(true); });
 }
 
 }  // namespace

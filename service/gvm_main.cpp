@@ -54,6 +54,8 @@ Options of both commands:
   --angle DEG          STEP: the tessellation's angular deflection (default 10)
   --features F         STEP: brep (default, one feature per B-rep face) or auto
                        (grouped from the mesh, as for any mesh)
+  --group-holes        STEP: the B-rep faces of one hole (coaxial cylinder and
+                       cone walls, the planes closing them) are one feature
   --threads N          worker threads (default: all cores)
   --method M           how the occlusion by O_S is computed: eme (effective
                        Minkowski envelope, the default) or convex (union of

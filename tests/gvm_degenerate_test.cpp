@@ -235,6 +235,24 @@ TEST_P(Variants, GroovedPocketFloorAndLowerWallsStillSeeTheAxis) {
   EXPECT_TRUE(wall == arc(rim, z, exact::cross(rim, z))) << wall.description();
 }
 
+// The grooved pocket with a vertex in the middle of the rim on x = 4, strictly inside the
+// strips the rays from the lower wall x0 sweep up along +z: they pass that vertex without
+// entering the solid (its cone is the wedge behind the upper wall and above the groove
+// ceiling, and +z runs along the wall), so every GVM is the grooved pocket's.
+TEST_P(Variants, RaysPassingARimVertexInTheirPlaneDoNotEnterThere) {
+  const auto o = GetParam();
+  Built b = build(test::grooved_pocket_rim_vertex_part(o));
+  const auto axis = sphere::SphericalImage::point(rotated(o, 0, 0, 1));
+  sphere::SphericalImage lower = gvm_of(b, {"lower_x0", "lower_x1", "lower_y0", "lower_y1"});
+  EXPECT_TRUE(lower == axis) << lower.description();
+  sphere::SphericalImage floor_and_lower =
+      gvm_of(b, {"floor", "lower_x0", "lower_x1", "lower_y0", "lower_y1"});
+  EXPECT_TRUE(floor_and_lower == axis) << floor_and_lower.description();
+  sphere::SphericalImage wall = gvm_of(b, {"lower_x0"});
+  const ExactVec z = rotated(o, 0, 0, 1), rim = rotated(o, 2, 0, 3);
+  EXPECT_TRUE(wall == arc(rim, z, exact::cross(rim, z))) << wall.description();
+}
+
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},

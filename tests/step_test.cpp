@@ -5,10 +5,16 @@
 #include <google/protobuf/util/message_differencer.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <stop_token>
+#include <thread>
 
 #include "gvm/analysis.h"
 #include "gvm/analysis_proto.h"
@@ -111,6 +117,32 @@ TEST(StepRead, BytesInMemoryGiveTheSameMesh) {
   }
 }
 
+// A stop request ends the reading: before it starts, and while the largest shared STEP
+// part (0.8 s to read and mesh) is being translated or meshed.
+TEST(StepRead, AStopRequestEndsTheReading) {
+  std::stop_source before;
+  before.request_stop();
+  StepOptions options;
+  options.stop = before.get_token();
+  StatusOr<StepPart> stopped = read_step(step_path("bug32745_pmi1.stp"), options);
+  ASSERT_FALSE(stopped.ok());
+  EXPECT_EQ(stopped.status().code(), StatusCode::kCancelled) << stopped.status().message();
+
+  std::stop_source during;
+  options.stop = during.get_token();
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    during.request_stop();
+  });
+  const auto start = std::chrono::steady_clock::now();
+  stopped = read_step(step_path("bug27453_165-174_piattello.stp"), options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stopper.join();
+  ASSERT_FALSE(stopped.ok());
+  EXPECT_EQ(stopped.status().code(), StatusCode::kCancelled) << stopped.status().message();
+  std::printf("piattello: stopped after 0.1 s, read_step returned after %.2f s\n", seconds);
+}
+
 Analysis analyzed(AnalyzeRequest request) {
   auto a = analyze(request);
   EXPECT_TRUE(a.ok()) << a.status().message();
@@ -172,8 +204,8 @@ void expect_same_as_its_tessellation(const std::string& file) {
   }
 }
 
-// Two parts whose analysis takes seconds (the plate's face 17 alone takes minutes: the
-// label-long test StepPlan.AllParts covers the rest).
+// Two parts whose analysis takes about a second (the label-long test StepPlan.AllParts
+// covers the rest).
 TEST(StepAnalysis, FeaturesAreTheBrepFacesAndTheMapsThoseOfTheTessellation) {
   expect_same_as_its_tessellation("bug32745_pmi1.stp");
   expect_same_as_its_tessellation("bm2_ec_lever-A.stp");
@@ -200,6 +232,89 @@ TEST(StepPlan, SmallPartsArePlanned) {
       EXPECT_TRUE(analysis.features()[s.id()].maps.gvm->contains(d)) << s.name();
     }
   }
+}
+
+// The plate's six through holes are each two half-cylinders about a vertical axis.
+TEST(StepHoles, ThePlatesHolesAreFoundWithTheirAxes) {
+  StepOptions options;
+  options.group_holes = true;
+  StatusOr<StepPart> part = read_step(step_path("bug3883_xr2-ct-214_plate.stp"), options);
+  ASSERT_TRUE(part.ok()) << part.status().message();
+  ASSERT_EQ(part->holes.size(), 6u);
+  std::set<uint32_t> seen;
+  for (const CadHole& h : part->holes) {
+    EXPECT_EQ(h.faces.size(), 2u);
+    EXPECT_EQ(h.radius, 5);
+    EXPECT_EQ(std::fabs(h.axis[2]), 1);
+    for (uint32_t f : h.faces) {
+      EXPECT_EQ(part->cad_faces[f].type, CadSurfaceType::kCylinder);
+      EXPECT_TRUE(seen.insert(f).second) << "face " << f << " is in two holes";
+    }
+  }
+  EXPECT_EQ(read_step(step_path("bug3883_xr2-ct-214_plate.stp"), {})->holes.size(), 0u) << "only when asked";
+}
+
+// A hole's faces as one feature: by Def. 2, a direction sees the union of faces iff it sees
+// each of them, so the hole's GVM is exactly the intersection of its faces' GVMs; every
+// other feature keeps its face's GVM.
+Analysis expect_holes_see_what_their_faces_see(const std::string& file, size_t holes) {
+  SCOPED_TRACE(file);
+  AnalyzeRequest by_face, by_hole;
+  by_face.part_path = by_hole.part_path = step_path(file);
+  by_hole.options.mutable_step()->set_group_holes(true);
+  const Analysis faces = analyzed(by_face);
+  Analysis grouped = analyzed(by_hole);
+  std::map<uint32_t, const Surface*> of_cad_face;
+  for (const Surface& f : faces.features()) of_cad_face[f.cad_face->index] = &f;
+  size_t found = 0, faces_in_holes = 0;
+  for (const Surface& f : grouped.features()) {
+    if (f.cad_face.has_value() == f.cad_hole.has_value() || !f.maps.gvm) {
+      ADD_FAILURE() << f.name << ": not exactly one of a B-rep face and a hole, or no GVM";
+      continue;
+    }
+    if (f.cad_face) {
+      EXPECT_EQ(*f.maps.gvm, *of_cad_face.at(f.cad_face->index)->maps.gvm) << f.name;
+      continue;
+    }
+    ++found;
+    faces_in_holes += f.cad_hole->faces.size();
+    DirectionSet every_face = DirectionSet::full_sphere();
+    for (uint32_t c : f.cad_hole->faces) {
+      const Surface& face = *of_cad_face.at(c);
+      every_face = every_face.intersection(*face.maps.gvm);
+      EXPECT_TRUE(std::includes(f.faces.begin(), f.faces.end(), face.faces.begin(), face.faces.end())) << face.name;
+    }
+    EXPECT_EQ(*f.maps.gvm, every_face) << f.name << ": " << f.maps.gvm->description() << " vs "
+                                       << every_face.description();
+  }
+  EXPECT_EQ(found, holes);
+  EXPECT_EQ(grouped.features().size() + faces_in_holes - found, faces.features().size());
+  return grouped;
+}
+
+TEST(StepHoles, AHolesGvmIsWhatEveryOneOfItsFacesSees) {
+  expect_holes_see_what_their_faces_see("bug32745_pmi1.stp", 2);
+  // The lever's two blind holes (wall and flat bottom) are reached along their axis only.
+  const Analysis lever = expect_holes_see_what_their_faces_see("bm2_ec_lever-A.stp", 2);
+  for (const Surface& f : lever.features()) {
+    if (!f.cad_hole) continue;
+    ASSERT_EQ(f.maps.gvm->dimension(), 0) << f.name;
+    const std::array<double, 3>& a = f.cad_hole->axis;
+    EXPECT_TRUE(*f.maps.gvm == DirectionSet::point(Direction(a[0], a[1], a[2])) ||
+                *f.maps.gvm == DirectionSet::point(Direction(-a[0], -a[1], -a[2])))
+        << f.name << ": " << f.maps.gvm->description();
+  }
+}
+
+TEST(StepHoles, GroupingHolesNeedsBrepFeatures) {
+  AnalyzeRequest request;
+  request.part_path = step_path("bug32745_pmi1.stp");
+  request.options.mutable_step()->set_group_holes(true);
+  request.options.mutable_step()->set_features(v1::STEP_FEATURES_AUTO);
+  auto a = analyze(request);
+  ASSERT_FALSE(a.ok());
+  EXPECT_EQ(a.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(a.status().message().find("step.group_holes"), std::string::npos) << a.status().message();
 }
 
 TEST(StepAnalysis, AutoFeaturesGroupTheMesh) {

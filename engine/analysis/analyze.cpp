@@ -63,13 +63,16 @@ PartSummary summarize(const RawMesh& raw, const Part& part, const SolidMesh& mes
   return out;
 }
 
-// The B-rep face a feature is, when all its faces come from one.
-std::optional<CadFace> cad_face_of(const Surface& feature, const StepPart& step) {
+// The B-rep face a feature is, when all its faces come from one, or else the hole it is.
+void describe_cad(Surface& feature, const StepPart& step) {
   const uint32_t first = step.face_cad[feature.faces.front()];
   for (uint32_t f : feature.faces) {
-    if (step.face_cad[f] != first) return std::nullopt;
+    if (step.face_cad[f] == first) continue;
+    for (const CadHole& h : step.holes)
+      if (std::binary_search(h.faces.begin(), h.faces.end(), first)) feature.cad_hole = h;
+    return;
   }
-  return step.cad_faces[first];
+  feature.cad_face = step.cad_faces[first];
 }
 
 // Throttled progress: the callback sees every surface, the log one line per second. A
@@ -112,13 +115,15 @@ StepOptions step_options(const v1::StepOptions& o) {
   out.linear_deflection = o.linear_deflection();
   if (o.angular_deflection_degrees() > 0) out.angular_deflection_degrees = o.angular_deflection_degrees();
   if (o.has_solid()) out.solid = static_cast<int>(o.solid());
+  out.group_holes = o.group_holes();
   return out;
 }
 
 // A STEP part: tessellated and welded by topology; its B-rep faces become the features
 // unless the request asks for the mesh-based ones (or gives its own groups).
 StatusOr<RawMesh> read_step_part(const AnalyzeRequest& request, std::optional<StepPart>& step) {
-  const StepOptions options = step_options(request.options.step());
+  StepOptions options = step_options(request.options.step());
+  options.stop = request.stop;
   StatusOr<StepPart> read =
       request.part_bytes ? read_step(*request.part_bytes, options, part_name(request)) : read_step(request.part_path, options);
   if (!read.ok()) return read.status();
@@ -230,7 +235,7 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
   std::vector<std::span<const uint32_t>> triangles;
   std::vector<Surface> surfaces = surfaces_of(impl->part, triangles);
   for (Surface& s : surfaces) {
-    if (step && s.kind == Surface::Kind::kFeature) s.cad_face = cad_face_of(s, *step);
+    if (step && s.kind == Surface::Kind::kFeature) describe_cad(s, *step);
   }
   const auto t0 = Clock::now();
   timing.threads = static_cast<uint32_t>(threads);
@@ -276,6 +281,9 @@ Status validate_step(const v1::StepOptions& step) {
   }
   if (!v1::StepFeatures_IsValid(step.features())) {
     return InvalidArgument("step.features " + std::to_string(step.features()) + " is not brep or auto");
+  }
+  if (step.group_holes() && step.features() == v1::STEP_FEATURES_AUTO) {
+    return InvalidArgument("step.group_holes (--group-holes) groups B-rep faces: it needs step.features brep (--features brep), not auto");
   }
   return Status::Ok();
 }

@@ -73,6 +73,13 @@ void fill_cad_face(const CadFace& f, v1::CadFace* out) {
   out->set_radius(f.radius);
 }
 
+void fill_cad_hole(const CadHole& h, v1::CadHole* out) {
+  for (uint32_t f : h.faces) out->add_faces(f);
+  set(out->mutable_axis(), {h.axis[0], h.axis[1], h.axis[2]});
+  set(out->mutable_location(), {h.location[0], h.location[1], h.location[2]});
+  out->set_radius(h.radius);
+}
+
 void fill_timing(const AnalysisTiming& t, v1::Timing* out) {
   out->set_read_seconds(t.read);
   out->set_validate_seconds(t.validate);
@@ -120,6 +127,7 @@ v1::Analysis to_proto(const Analysis& analysis) {
     msg->set_on_hull(f.on_hull);
     msg->set_region(f.region);
     if (f.cad_face) fill_cad_face(*f.cad_face, msg->mutable_cad_face());
+    if (f.cad_hole) fill_cad_hole(*f.cad_hole, msg->mutable_cad_hole());
     fill_surface(f, msg);
   }
   fill_timing(analysis.timing(), out.mutable_timing());

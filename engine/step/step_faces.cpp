@@ -113,11 +113,16 @@ std::string face_label(const TopoDS_Face& face, uint32_t index) {
 
 }  // namespace step_internal
 std::map<std::string, std::vector<uint32_t>> brep_face_groups(const StepPart& part) {
-  std::map<std::string, std::vector<uint32_t>> groups;
-  for (uint32_t f = 0; f < part.face_cad.size(); ++f) {
-    const CadFace& cad = part.cad_faces[part.face_cad[f]];
-    groups["face " + std::to_string(cad.index) + " (" + std::string(name_of(cad.type)) + ")"].push_back(f);
+  std::vector<std::string> name(part.cad_faces.size());
+  for (const CadFace& cad : part.cad_faces)
+    name[cad.index] = "face " + std::to_string(cad.index) + " (" + std::string(name_of(cad.type)) + ")";
+  for (size_t h = 0; h < part.holes.size(); ++h) {
+    std::string faces;
+    for (uint32_t f : part.holes[h].faces) faces += (faces.empty() ? "" : "+") + std::to_string(f);
+    for (uint32_t f : part.holes[h].faces) name[f] = "hole " + std::to_string(h) + " (faces " + faces + ")";
   }
+  std::map<std::string, std::vector<uint32_t>> groups;
+  for (uint32_t f = 0; f < part.face_cad.size(); ++f) groups[name[part.face_cad[f]]].push_back(f);
   return groups;
 }
 

@@ -2,6 +2,7 @@
 // and out of gvm/step.h.
 #pragma once
 
+#include <Message_ProgressIndicator.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
@@ -10,6 +11,7 @@
 
 #include <cstdint>
 #include <string>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -24,8 +26,23 @@ struct Translated {
   int damaged_entities = 0;  // entities with syntax errors or references to missing ones
 };
 
+// Open CASCADE's progress indicator that asks it to stop once `stop` is requested: its
+// translation and meshing poll UserBreak() (step_reader.cpp).
+class StopOnRequest : public Message_ProgressIndicator {
+ public:
+  explicit StopOnRequest(std::stop_token stop) : stop_(std::move(stop)) {}
+  Standard_Boolean UserBreak() override { return stop_.stop_requested(); }
+  void Show(const Message_ProgressScope&, const Standard_Boolean) override {}
+
+ private:
+  std::stop_token stop_;
+};
+
+// "SOURCE: reading cancelled", kCancelled (step_reader.cpp).
+Status cancelled(const std::string& source);
+
 // Parses the bytes and transfers all roots, lengths in mm (step_reader.cpp).
-StatusOr<Translated> translate(std::string_view bytes, const std::string& source);
+StatusOr<Translated> translate(std::string_view bytes, const std::string& source, const std::stop_token& stop);
 
 // Picks the solid asked for by `choice` (StepOptions::solid) and checks it: one solid
 // when choice is -1, no loose faces, a valid B-rep without free edges (step_solid.cpp).
@@ -35,13 +52,17 @@ StatusOr<TopoDS_Shape> select_solid(const TopoDS_Shape& shape, int choice,
 // The CAD record of each face of `faces` (step_faces.cpp).
 std::vector<CadFace> describe_faces(const TopTools_IndexedMapOfShape& faces);
 
+// The holes among `faces` of `solid`; `cad` describes them (step_holes.cpp).
+std::vector<CadHole> find_holes(const TopoDS_Shape& solid, const TopTools_IndexedMapOfShape& faces,
+                                const std::vector<CadFace>& cad);
+
 // "face 73 (plane, 0.004 x 5e-05 x 0 mm, area 2e-07 mm^2)", for messages (step_faces.cpp).
 std::string face_label(const TopoDS_Face& face, uint32_t index);
 
 // Tessellates `solid` and welds the triangulation by topology into part.mesh and
 // part.face_cad; part.cad_faces must already be filled (step_tessellation.cpp).
 Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians,
-                  StepPart& part);
+                  const std::stop_token& stop, StepPart& part);
 
 // The points of the welded mesh, keyed by topology: one per B-rep vertex, one per interior
 // node of each edge's discretisation (shared by the faces on both sides of the edge).

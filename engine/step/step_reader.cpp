@@ -63,7 +63,9 @@ void silence_open_cascade() {
 
 }  // namespace
 
-StatusOr<Translated> translate(std::string_view bytes, const std::string& source) {
+Status cancelled(const std::string& source) { return Status(StatusCode::kCancelled, source + ": reading cancelled"); }
+
+StatusOr<Translated> translate(std::string_view bytes, const std::string& source, const std::stop_token& stop) {
   std::lock_guard lock(translation_mutex());
   silence_open_cascade();
   STEPControl_Reader reader;
@@ -82,7 +84,10 @@ StatusOr<Translated> translate(std::string_view bytes, const std::string& source
   TColStd_SequenceOfAsciiString length, angle, solid_angle;
   reader.FileUnits(length, angle, solid_angle);
   if (!length.IsEmpty()) t.file_unit = lower(length.First().ToCString());
-  reader.TransferRoots();
+  if (stop.stop_requested()) return cancelled(source);
+  Handle(StopOnRequest) progress = new StopOnRequest(stop);
+  reader.TransferRoots(progress->Start());
+  if (stop.stop_requested()) return cancelled(source);
   t.shape = reader.OneShape();
   if (t.shape.IsNull())
     return InvalidArgument(source + ": the STEP file holds no B-rep geometry Open CASCADE can "
@@ -119,7 +124,7 @@ Status check_options(const StepOptions& o, const std::string& source) {
 
 StatusOr<StepPart> read_checked(std::string_view bytes, const StepOptions& options,
                                 const std::string& source) {
-  auto translated = translate(bytes, source);
+  auto translated = translate(bytes, source, options.stop);
   if (!translated.ok()) return translated.status();
   auto solid = select_solid(translated->shape, options.solid, source);
   if (!solid.ok()) {
@@ -136,14 +141,16 @@ StatusOr<StepPart> read_checked(std::string_view bytes, const StepOptions& optio
   part.file_unit = translated->file_unit;
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(*solid, TopAbs_FACE, faces);
+  if (options.stop.stop_requested()) return cancelled(source);
   part.cad_faces = describe_faces(faces);
+  if (options.group_holes) part.holes = find_holes(*solid, faces, part.cad_faces);
   part.linear_deflection = options.linear_deflection > 0 ? options.linear_deflection
                                                          : 0.001 * diagonal(*solid);
   if (!(part.linear_deflection > 0))
     return InvalidArgument(source + ": the solid has an empty bounding box");
   part.angular_deflection_degrees = options.angular_deflection_degrees;
   const double angular = options.angular_deflection_degrees * std::numbers::pi / 180;
-  if (Status s = tessellate(*solid, part.linear_deflection, angular, part); !s.ok()) return s;
+  if (Status s = tessellate(*solid, part.linear_deflection, angular, options.stop, part); !s.ok()) return s;
   return part;
 }
 

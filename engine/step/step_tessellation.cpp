@@ -168,11 +168,17 @@ std::string mesher_status(int flags) {
 
 }  // namespace
 
-Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians, StepPart& part) {
+Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians,
+                  const std::stop_token& stop, StepPart& part) {
   // A file may carry its own triangulation; ours must come from one BRepMesh run.
   BRepTools::Clean(solid);
-  BRepMesh_IncrementalMesh mesher(solid, linear, /*isRelative=*/false, angular_radians,
-                                  /*isInParallel=*/true);
+  IMeshTools_Parameters parameters;
+  parameters.Deflection = linear;
+  parameters.Angle = angular_radians;
+  parameters.InParallel = true;
+  Handle(StopOnRequest) progress = new StopOnRequest(stop);
+  BRepMesh_IncrementalMesh mesher(solid, parameters, progress->Start());
+  if (stop.stop_requested()) return cancelled(part.mesh.source);
   const std::string why = "BRepMesh left it without triangles (mesher status: " +
                           mesher_status(mesher.GetStatusFlags()) + ")";
   Weld weld;

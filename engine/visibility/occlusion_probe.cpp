@@ -9,6 +9,7 @@
 #include <span>
 
 #include "exact/interrupt.h"
+#include "sphere/point_in_face.h"
 #include "sphere/spherical_image.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
@@ -29,9 +30,10 @@ Corners corners(const SolidMesh& mesh, uint32_t t) {
 // are weakly separated along some axis: w . u >= 0 (else the sweep is unbounded below
 // along w) and w . (t - p) <= 0 for every t and every corner p of F_S. Weak separation
 // along the facet normals of their Minkowski difference decides that the relative
-// interiors are disjoint (separating axis theorem).
+// interiors are disjoint (separating axis theorem); `strictly` asks for w . (t - p) < 0,
+// which decides that t misses the closed sweep.
 bool separated(std::span<const ExactVec> axes, std::span<const ExactVec> t, const Corners& p,
-               const ExactVec& u) {
+               const ExactVec& u, bool strictly = false) {
   std::vector<ExactVec> differences;
   for (const ExactVec& x : t) {
     for (const ExactVec& y : p) differences.push_back(x - y);
@@ -40,7 +42,8 @@ bool separated(std::span<const ExactVec> axes, std::span<const ExactVec> t, cons
     if (exact::is_zero(w) || exact::sign_dot(w, u) == Sign::kNegative) continue;
     bool separates = true;
     for (const ExactVec& d : differences) {
-      if (exact::sign_dot(w, d) == Sign::kPositive) {
+      const Sign s = exact::sign_dot(w, d);
+      if (s == Sign::kPositive || (strictly && s == Sign::kZero)) {
         separates = false;
         break;
       }
@@ -177,12 +180,39 @@ bool OcclusionProbe::may_block(uint32_t fs, uint32_t ft, const ExactVec& u) cons
     if (!convex) return true;
     if (exact::sign_dot(u, exact::cross(c[1] - c[0], c[2] - c[0])) == Sign::kNegative) return true;
   }
-  // A corner of T inside the strip: whether u points into the solid there depends on the
-  // whole star of the corner; counted as blocking (conservative).
+  // A corner of T in the closed strip (its sides too: rays from the boundary of F_S are
+  // rays from S): u enters the solid there iff it points into the solid's cone there.
   for (int k = 0; k < 3; ++k) {
-    if (side[k] == Sign::kZero && !separated(in_plane, std::span(&t[k], 1), s, u)) return true;
+    if (side[k] == Sign::kZero && !separated(in_plane, std::span(&t[k], 1), s, u, /*strictly=*/true) &&
+        enters_at_corner(ft, k, u)) {
+      return true;
+    }
   }
   return false;
+}
+
+bool OcclusionProbe::enters_at_corner(uint32_t t, int corner, const ExactVec& u) const {
+  // The cone's boundary on the sphere of directions around v is the link of v: for each
+  // triangle (v, a, b) of its star, counter-clockwise seen from outside, the minor arc from
+  // b - v to a - v, which has the solid on its left. Walking across the edges (v, a)
+  // chains the arcs into one loop.
+  const uint32_t v = mesh_.triangles[t][corner];
+  const ExactVec at = ExactVec::from_point(mesh_.points[v]);
+  sphere::Face cone;
+  sphere::Loop& link = cone.loops.emplace_back();
+  uint32_t current = t;
+  do {
+    const Triangle& tri = mesh_.triangles[current];
+    int i = 0;
+    while (tri[i] != v) ++i;
+    const ExactVec a = ExactVec::from_point(mesh_.points[tri[(i + 1) % 3]]) - at;
+    const ExactVec b = ExactVec::from_point(mesh_.points[tri[(i + 2) % 3]]) - at;
+    sphere::Arc arc{b, a, exact::cross(b, a)};
+    if (sphere::arc_contains(arc, u)) return false;  // along a face or an edge of the star
+    link.arcs.push_back(std::move(arc));
+    current = mesh_.neighbor[current][i];  // across the edge (v, a)
+  } while (current != t && link.arcs.size() <= mesh_.triangles.size());
+  return sphere::point_in_face(cone, u);
 }
 
 OcclusionProbe::OcclusionProbe(const SolidMesh& mesh, std::span<const uint32_t> s,

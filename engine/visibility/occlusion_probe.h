@@ -19,10 +19,11 @@
 //    the solid at a point of the strip where u points into it, on a face T met from the
 //    front: T crosses the strip's plane there (the relative interiors meet: the same
 //    test), or touches it along an edge, where u enters iff the edge is concave or flat,
-//    or convex with the face across met from the front too, or at a corner, where the
-//    whole star of the corner would decide: counted as entering (conservative).
-// Every pair is decided exactly, so "visible" is exact and "occluded" is exact except
-// for rays in a plane of S that pass a corner of O.
+//    or convex with the face across met from the front too, or at a corner, where u
+//    enters iff it points strictly into the solid's cone at the corner (bounded by the
+//    corner's star).
+// Every pair is decided exactly, so both answers for a direction are exact; an arc of
+// the LVM in the plane of a triangle of S is not decided (unoccluded() below).
 #pragma once
 
 #include <cstdint>
@@ -40,8 +41,8 @@ class OcclusionProbe {
   // s: the triangles of S; o: those of O that may block directions of the LVM (the beam).
   OcclusionProbe(const SolidMesh& mesh, std::span<const uint32_t> s, std::span<const uint32_t> o);
 
-  // False only if no ray from S along u (a direction of LVM(S + N_S)) meets the interior
-  // of the solid.
+  // True iff some ray from S along u (a direction of LVM(S + N_S)) meets the interior of
+  // the solid.
   bool occluded(const exact::ExactVec& u) const;
 
   // The directions of an open arc of the LVM (shorter than 180 degrees) along which no
@@ -51,13 +52,16 @@ class OcclusionProbe {
   std::vector<sphere::Arc> unoccluded(const sphere::Arc& open_arc) const;
 
   // The triangles of O through which rays from S along u (a direction of the LVM) enter
-  // the solid, ascending: the faces that block u (exact, with the same exception).
+  // the solid, ascending: the faces that block u (exact).
   std::vector<uint32_t> blockers(const exact::ExactVec& u) const;
 
  private:
-  // Whether rays from triangle fs of S along u may meet the interior of the solid through
-  // triangle ft of O (exact unless u lies in fs's plane and the rays pass a corner of ft).
+  // Whether rays from triangle fs of S along u meet the interior of the solid through
+  // triangle ft of O (exactly; true as well when u is not in fs's closed half-space).
   bool may_block(uint32_t fs, uint32_t ft, const exact::ExactVec& u) const;
+  // Whether a ray along u through corner `corner` of triangle t enters the solid's
+  // interior there: u strictly inside the solid's tangent cone at that vertex.
+  bool enters_at_corner(uint32_t t, int corner, const exact::ExactVec& u) const;
   // Calls visit(fs, ft) (in parallel) for the pairs of S and O whose segments may have a
   // direction in the cell; a pair's visit returning false ends its triangle of S early.
   template <class Visit>

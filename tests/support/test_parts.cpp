@@ -280,6 +280,34 @@ RawMesh grooved_pocket_part(const TestPartOptions& o) {
   return build(m, o);
 }
 
+RawMesh grooved_pocket_rim_vertex_part(const TestPartOptions& o) {
+  GridModel m;
+  m.name = "grooved_pocket_rim_vertex";
+  m.g[0] = {0, 3, 4, 8, 9, 12};
+  m.g[1] = {0, 3, 4, 6, 8, 9, 12};
+  m.g[2] = {0, 4, 6, 8, 10};
+  m.filled = [](int i, int j, int k) {
+    const bool bore = i == 2 && j >= 2 && j <= 3 && k >= 1;
+    const bool groove = k == 2 && i >= 1 && i <= 3 && j >= 1 && j <= 4;
+    return !(bore || groove);
+  };
+  m.rename = {{"z+4", "floor"},          {"z+6", "groove_floor"}, {"z-8", "groove_ceiling"},
+              {"z+10", "top"},           {"x+4_0", "lower_x0"},   {"x-8_0", "lower_x1"},
+              {"y+4_0", "lower_y0"},     {"y-8_0", "lower_y1"},   {"x+4_1", "upper_x0"},
+              {"x-8_1", "upper_x1"},     {"y+4_1", "upper_y0"},   {"y-8_1", "upper_y1"}};
+  m.move = [](I3& p) {
+    if (p[2] == 0) {  // as in grooved_pocket_part
+      for (int k = 0; k < 2; ++k) {
+        if (p[k] == 4) p[k] = 5;
+        else if (p[k] == 8) p[k] = 7;
+      }
+    } else if (p[0] == 4 && p[1] == 6 && (p[2] == 4 || p[2] == 6)) {
+      p[1] = 5;
+    }
+  };
+  return build(m, o);
+}
+
 RawMesh step_part(const TestPartOptions& o) {
   GridModel m;
   m.name = "step";
@@ -357,6 +385,7 @@ std::vector<NamedTestPart> all_test_parts() {
           {"pocket", pocket_part},
           {"drafted_pocket", drafted_pocket_part},
           {"grooved_pocket", grooved_pocket_part},
+          {"grooved_pocket_rim_vertex", grooved_pocket_rim_vertex_part},
           {"step", step_part},
           {"tslot_closed", tslot_closed_part},
           {"tslot_open", tslot_open_part},

@@ -35,6 +35,10 @@ RawMesh through_hole_part(const TestPartOptions& o = {});   // square hole along
 RawMesh pocket_part(const TestPartOptions& o = {});         // blind square pocket
 RawMesh drafted_pocket_part(const TestPartOptions& o = {}); // walls lean out 1 in 4
 RawMesh grooved_pocket_part(const TestPartOptions& o = {}); // pocket, groove round its walls
+// The same, with a vertex in the middle of the groove ceiling's inner edge on x = 4 and the
+// lower wall there a single quad across it (the floor's and groove floor's grid vertices
+// at y = 6 on that wall moved to y = 5): rays up the wall pass that rim vertex.
+RawMesh grooved_pocket_rim_vertex_part(const TestPartOptions& o = {});
 RawMesh step_part(const TestPartOptions& o = {});           // L-shaped step along y
 RawMesh tslot_closed_part(const TestPartOptions& o = {});   // T-slot closed at both ends
 RawMesh tslot_open_part(const TestPartOptions& o = {});     // T-slot open at both ends

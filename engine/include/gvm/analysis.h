@@ -85,6 +85,7 @@ struct Surface {
   // Every triangle lies in one plane with one orientation: its outward normal, exactly.
   std::optional<Direction> planar_normal;
   std::optional<CadFace> cad_face;   // features of a STEP part: the B-rep face they are
+  std::optional<CadHole> cad_hole;   // ... or the hole (StepOptions::group_holes)
   SurfaceMaps maps;
 };
 

@@ -19,6 +19,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -49,10 +50,23 @@ struct CadFace {
   double radius = 0;                               // cylinder radius, cone reference radius
 };
 
+// Faces a machinist calls one hole (walls, countersink or counterbore, drill point or flat
+// bottom), found from the B-rep's topology and axes (step_holes.cpp says the rule).
+struct CadHole {
+  std::vector<uint32_t> faces;  // B-rep face indices, ascending, at least two
+  // Of its narrowest cylinder wall, as the B-rep gives them.
+  std::array<double, 3> axis{}, location{};
+  double radius = 0;
+};
+
 struct StepOptions {
   double linear_deflection = 0;  // mm; 0: 0.1% of the bounding box diagonal
   double angular_deflection_degrees = 10;
   int solid = -1;  // -1: the file must hold exactly one solid; else the 0-based solid to take
+  bool group_holes = false;  // find StepPart::holes
+  // A stop request ends the reading (kCancelled) at the next check: between parsing,
+  // translation, checking and meshing, and inside translation and meshing.
+  std::stop_token stop;
 };
 
 struct StepPart {
@@ -62,6 +76,7 @@ struct StepPart {
   RawMesh mesh;
   std::vector<uint32_t> face_cad;   // per mesh face: the index of its CAD face
   std::vector<CadFace> cad_faces;   // every B-rep face of the solid
+  std::vector<CadHole> holes;       // with StepOptions::group_holes, in order of first face
   std::string file_unit;            // the length unit the file declares ("millimetre", "metre", "inch", ...)
   double linear_deflection = 0, angular_deflection_degrees = 0;  // as applied
 };
@@ -70,7 +85,7 @@ struct StepPart {
 // B-rep, tessellates it and welds the triangulation by topology. Fails with kNotFound when
 // the file does not exist, kInvalidArgument (message naming the file and the problem:
 // not STEP, no solid, several solids, invalid B-rep face, face that cannot be
-// triangulated) otherwise.
+// triangulated) otherwise, kCancelled on a stop request.
 StatusOr<StepPart> read_step(const std::string& path, const StepOptions& options);
 
 // The same on bytes in memory (STEPControl_Reader::ReadStream); `source` names the part in
@@ -78,7 +93,8 @@ StatusOr<StepPart> read_step(const std::string& path, const StepOptions& options
 StatusOr<StepPart> read_step(std::string_view bytes, const StepOptions& options,
                              const std::string& source);
 
-// One face group per B-rep face, named "face 12 (cylinder)" (the features of a STEP part).
+// One face group per B-rep face, named "face 12 (cylinder)" (the features of a STEP part),
+// except that the faces of each of part.holes form one group, "hole 3 (faces 12+13+40)".
 std::map<std::string, std::vector<uint32_t>> brep_face_groups(const StepPart& part);
 
 }  // namespace gvm
