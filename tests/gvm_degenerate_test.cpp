@@ -253,6 +253,22 @@ TEST_P(Variants, RaysPassingARimVertexInTheirPlaneDoNotEnterThere) {
   EXPECT_TRUE(wall == arc(rim, z, exact::cross(rim, z))) << wall.description();
 }
 
+// A slot with a groove round its walls at mid-height, its upper walls in the planes of the
+// lower ones: the floor with its lower walls sees the half circle of the plain slot, the
+// rays along it running in the walls' planes past the groove (the arc lies in the planes
+// of triangles of S, and every direction off it is blocked by the groove's ceiling).
+TEST_P(Variants, GroovedSlotFloorAndLowerWallsSeeTheHalfCircle) {
+  const auto o = GetParam();
+  Built b = build(test::grooved_slot_part(o));
+  auto expected = arc(rotated(o, 0, -1, 0), rotated(o, 0, 1, 0), rotated(o, -1, 0, 0));
+  for (auto names : {std::initializer_list<std::string>{"floor"},
+                     std::initializer_list<std::string>{"floor", "lower_x0", "lower_x1"},
+                     std::initializer_list<std::string>{"lower_x0", "lower_x1"}}) {
+    sphere::SphericalImage g = gvm_of(b, names);
+    EXPECT_TRUE(g == expected) << g.description();
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},

@@ -6,13 +6,17 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <optional>
 #include <span>
+
+#include <spdlog/spdlog.h>
 
 #include "exact/interrupt.h"
 #include "sphere/point_in_face.h"
 #include "sphere/spherical_image.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
+#include "visibility/strip_events.h"
 
 namespace gvm {
 namespace {
@@ -133,6 +137,8 @@ bool OcclusionProbe::may_block(uint32_t fs, uint32_t ft, const ExactVec& u) cons
   const std::array<ExactVec, 3> t_edges{t[1] - t[0], t[2] - t[1], t[0] - t[2]};
   const Sign facing = exact::sign_dot(u, n_s);
   if (facing == Sign::kNegative) return true;  // not a direction of the LVM: no claim
+  // In the plane of F_S, only a face met from the front lets rays in (below).
+  if (facing == Sign::kZero && exact::sign_dot(u, n_t) != Sign::kNegative) return false;
 
   // The facets of T - (F_S + R>=0 u): the two normals and the cross products of edges.
   std::vector<ExactVec> axes{n_s, n_t};
@@ -150,9 +156,8 @@ bool OcclusionProbe::may_block(uint32_t fs, uint32_t ft, const ExactVec& u) cons
 
   // u lies in the plane P of F_S: the rays sweep the planar strip F_S + R>0 u. They enter
   // the solid at a point of the strip where u points into it, which lies on a face met
-  // from the front (u . n_T < 0), across P (caught by the same test: the relative
-  // interiors meet) or touching P along an edge or at a corner.
-  if (exact::sign_dot(u, n_t) != Sign::kNegative) return false;
+  // from the front (u . n_T < 0, checked above), across P (caught by the same test: the
+  // relative interiors meet) or touching P along an edge or at a corner.
   if (!separated(axes, t, s, u)) return true;
   std::array<Sign, 3> side;
   for (int i = 0; i < 3; ++i) side[i] = exact::sign_dot(n_s, t[i] - s[0]);
@@ -200,9 +205,8 @@ bool OcclusionProbe::enters_at_corner(uint32_t t, int corner, const ExactVec& u)
   const ExactVec at = ExactVec::from_point(mesh_.points[v]);
   sphere::Face cone;
   sphere::Loop& link = cone.loops.emplace_back();
-  uint32_t current = t;
-  do {
-    const Triangle& tri = mesh_.triangles[current];
+  for (uint32_t f : vertex_star(mesh_, t, corner)) {
+    const Triangle& tri = mesh_.triangles[f];
     int i = 0;
     while (tri[i] != v) ++i;
     const ExactVec a = ExactVec::from_point(mesh_.points[tri[(i + 1) % 3]]) - at;
@@ -210,8 +214,7 @@ bool OcclusionProbe::enters_at_corner(uint32_t t, int corner, const ExactVec& u)
     sphere::Arc arc{b, a, exact::cross(b, a)};
     if (sphere::arc_contains(arc, u)) return false;  // along a face or an edge of the star
     link.arcs.push_back(std::move(arc));
-    current = mesh_.neighbor[current][i];  // across the edge (v, a)
-  } while (current != t && link.arcs.size() <= mesh_.triangles.size());
+  }
   return sphere::point_in_face(cone, u);
 }
 
@@ -264,24 +267,30 @@ std::vector<uint32_t> OcclusionProbe::blockers(const ExactVec& u) const {
 }
 
 std::vector<sphere::Arc> OcclusionProbe::unoccluded(const sphere::Arc& open_arc) const {
-  // A triangle of S whose plane holds the arc sweeps planar strips all along it, where
-  // rays may graze: not decided here (the arc counts as occluded).
+  // Triangles of S whose plane holds the arc sweep planar strips all along it, where rays
+  // may graze; every other one has u . n_S > 0 on the open arc (it lies in the LVM, and
+  // u . n_S is a sinusoid along its circle, so it cannot touch zero inside it) and sweeps
+  // open prisms.
+  std::vector<bool> in_plane(mesh_.triangles.size(), false);
+  std::vector<uint32_t> strips;
   for (uint32_t t : s_) {
     const Corners c = corners(mesh_, t);
-    if (exact::parallel(exact::cross(c[1] - c[0], c[2] - c[0]), open_arc.normal)) return {};
+    if (exact::parallel(exact::cross(c[1] - c[0], c[2] - c[0]), open_arc.normal)) {
+      in_plane[t] = true;
+      strips.push_back(t);
+    }
   }
-  // Elsewhere u . n_S > 0 on the open arc (it lies in the LVM, and u . n_S is a sinusoid
-  // along its circle, so it cannot touch zero inside it): every ray from S sweeps open
-  // prisms, and u is occluded iff it lies in the interior of a pairwise map (rays from
-  // inside F_S hit the inside of T; conversely a generic ray of an open prism that meets
-  // the solid first enters it through the inside of a face, and perturbing both ends
-  // covers a neighbourhood of u).
+  // Prisms: u is occluded iff it lies in the interior of a pairwise map (rays from inside
+  // F_S hit the inside of T; conversely a generic ray of an open prism that meets the
+  // solid first enters it through the inside of a face, and perturbing both ends covers a
+  // neighbourhood of u).
   sphere::SphericalImage cell;
   cell.add_curve(open_arc);
   tbb::concurrent_vector<Interval> covered;
   std::atomic<bool> all_covered{false};  // by one map: the usual case deep in Int(GOM)
   for_each_pair(cell, [&](uint32_t fs, uint32_t ft) {
     if (all_covered.load(std::memory_order_relaxed)) return false;
+    if (in_plane[fs]) return true;
     const Triangle& s = mesh_.triangles[fs];
     const Triangle& t = mesh_.triangles[ft];
     std::vector<ExactVec> d;
@@ -303,15 +312,111 @@ std::vector<sphere::Arc> OcclusionProbe::unoccluded(const sphere::Arc& open_arc)
     return true;
   });
   if (all_covered) return {};
-  // Points between two intervals are decided on their own (rays through them may still
-  // enter the solid in a plane of S).
+  // Outside the prisms' intervals, only the strips can block: their answer is constant
+  // between their events (strip_events.h), so each piece is decided at the events and
+  // between them. Points between two intervals are decided on their own (rays through
+  // them may still enter the solid in a plane of S).
+  std::optional<Strips> along;  // built when a piece needs it
   std::vector<sphere::Arc> pieces;
   for (sphere::Arc& piece : complement(open_arc, {covered.begin(), covered.end()})) {
-    if (!exact::same_direction(piece.start, piece.end) || !occluded(piece.start)) {
+    if (exact::same_direction(piece.start, piece.end)) {
+      if (!occluded(piece.start)) pieces.push_back(std::move(piece));
+    } else if (strips.empty()) {
       pieces.push_back(std::move(piece));
+    } else {
+      if (!along) {
+        along = strips_along(strips, open_arc);
+        spdlog::debug("occlusion probe: arc in the plane of {} triangles of S, {} strip pairs, {} events",
+                      strips.size(), along->pairs.size(), along->events.size());
+      }
+      decide_between_events(piece, open_arc, *along, pieces);
     }
   }
   return pieces;
+}
+
+OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in_plane,
+                                                    const sphere::Arc& open_arc) const {
+  // Only pairs whose segments may have a direction on the arc (certified double filter).
+  sphere::SphericalImage cell;
+  cell.add_curve(open_arc);
+  const DirectionWindow window(cell, coordinate_bound_);
+  const size_t K = window.size();
+  const std::vector<double> o_max = window.extremes(mesh_, o_, true);
+  Strips strips;
+  tbb::concurrent_vector<ExactVec> lines;
+  for (const auto& [plane, triangles] : strip_planes(mesh_, in_plane)) {
+    const std::vector<double> s_min = window.extremes(mesh_, triangles, false);
+    tbb::concurrent_vector<std::pair<uint32_t, uint32_t>> pairs;
+    tbb::parallel_for(size_t{0}, o_.size(), [&](size_t oi) {
+      std::vector<uint32_t> near;
+      for (size_t si = 0; si < triangles.size(); ++si) {
+        if (window.may_meet(&o_max[oi * K], &s_min[si * K])) near.push_back(triangles[si]);
+      }
+      if (near.empty() || !touches(mesh_, plane, o_[oi])) return;
+      for (uint32_t fs : near) pairs.emplace_back(fs, o_[oi]);
+      std::vector<ExactVec> mine;
+      add_strip_events(mesh_, plane, o_[oi], mine);
+      for (ExactVec& d : mine) lines.push_back(std::move(d));
+    });
+    interruption_point();
+    strips.pairs.insert(strips.pairs.end(), pairs.begin(), pairs.end());
+  }
+  const ArcOrder order{open_arc.normal};
+  for (const ExactVec& line : lines) {
+    for (const ExactVec& d : {line, -line}) {
+      if (order.before(open_arc.start, d) && order.before(d, open_arc.end)) strips.events.push_back(d);
+    }
+  }
+  std::vector<ExactVec>& e = strips.events;
+  std::sort(e.begin(), e.end(), [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); });
+  e.erase(std::unique(e.begin(), e.end(), [](const ExactVec& x, const ExactVec& y) { return exact::same_direction(x, y); }),
+          e.end());
+  return strips;
+}
+
+bool OcclusionProbe::Strips::block(const OcclusionProbe& probe, const ExactVec& u, size_t& last) const {
+  // Neighbouring stretches are mostly blocked by the same pair: try the last one first.
+  if (last < pairs.size() && probe.may_block(pairs[last].first, pairs[last].second, u)) return true;
+  std::atomic<size_t> found{pairs.size()};
+  tbb::parallel_for(size_t{0}, pairs.size(), [&](size_t i) {
+    if (found.load(std::memory_order_relaxed) == pairs.size() && probe.may_block(pairs[i].first, pairs[i].second, u)) {
+      found = i;
+    }
+  });
+  interruption_point();
+  if (found == pairs.size()) return false;
+  last = found;
+  return true;
+}
+
+void OcclusionProbe::decide_between_events(const sphere::Arc& piece, const sphere::Arc& open_arc,
+                                           const Strips& strips, std::vector<sphere::Arc>& out) const {
+  const ArcOrder order{open_arc.normal};
+  std::vector<ExactVec> at{piece.start};
+  for (const ExactVec& e : strips.events) {
+    if (order.before(piece.start, e) && order.before(e, piece.end)) at.push_back(e);
+  }
+  at.push_back(piece.end);
+  // No prism blocks the piece, so only the strips can. The visible set is closed (the
+  // blocked one is open: rays meeting the open interior keep meeting it when u moves a
+  // little), so a visible stretch between events brings its ends along; an event is
+  // otherwise visible on its own. The ends of the whole arc are not in it (the caller
+  // decides them).
+  size_t last = 0;
+  std::vector<bool> between(at.size() - 1);
+  for (size_t i = 0; i + 1 < at.size(); ++i) between[i] = !strips.block(*this, at[i] + at[i + 1], last);
+  for (size_t i = 0; i < at.size(); ++i) {
+    const bool before = i > 0 && between[i - 1], after = i + 1 < at.size() && between[i];
+    if (after && before) {
+      out.back().end = at[i + 1];  // the stretch goes on
+    } else if (after) {
+      out.push_back({at[i], at[i + 1], open_arc.normal});
+    } else if (!before && !exact::same_direction(at[i], open_arc.start) &&
+               !exact::same_direction(at[i], open_arc.end) && !strips.block(*this, at[i], last)) {
+      out.push_back({at[i], at[i], open_arc.normal});
+    }
+  }
 }
 
 }  // namespace gvm

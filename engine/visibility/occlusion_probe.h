@@ -47,8 +47,8 @@ class OcclusionProbe {
 
   // The directions of an open arc of the LVM (shorter than 180 degrees) along which no
   // ray from S meets the interior of the solid: closed sub-arcs, and points (start ==
-  // end), in order. Exact, except that an arc in the plane of a triangle of S counts as
-  // occluded (nothing is returned).
+  // end), in order. Exact (an arc in the plane of triangles of S is decided between the
+  // events of their strips, strip_events.h).
   std::vector<sphere::Arc> unoccluded(const sphere::Arc& open_arc) const;
 
   // The triangles of O through which rays from S along u (a direction of the LVM) enter
@@ -62,6 +62,20 @@ class OcclusionProbe {
   // Whether a ray along u through corner `corner` of triangle t enters the solid's
   // interior there: u strictly inside the solid's tangent cone at that vertex.
   bool enters_at_corner(uint32_t t, int corner, const exact::ExactVec& u) const;
+  // The strips swept along an arc by the triangles of S in its plane: the pairs of such a
+  // triangle and a triangle of O touching that plane, and their events inside the open
+  // arc (strip_events.h), in order along it, without repeats.
+  struct Strips {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    std::vector<exact::ExactVec> events;
+    // Whether some pair blocks u; `last` is the pair that blocked last (tried first, updated).
+    bool block(const OcclusionProbe& probe, const exact::ExactVec& u, size_t& last) const;
+  };
+  Strips strips_along(std::span<const uint32_t> in_plane, const sphere::Arc& open_arc) const;
+  // Appends the visible parts of `piece`, a closed sub-arc of open_arc that no prism
+  // blocks, to `out` (merged into maximal arcs, and points).
+  void decide_between_events(const sphere::Arc& piece, const sphere::Arc& open_arc, const Strips& strips,
+                             std::vector<sphere::Arc>& out) const;
   // Calls visit(fs, ft) (in parallel) for the pairs of S and O whose segments may have a
   // direction in the cell; a pair's visit returning false ends its triangle of S early.
   template <class Visit>

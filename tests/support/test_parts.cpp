@@ -226,6 +226,24 @@ RawMesh slot_part(const TestPartOptions& o) {
   return build(m, o);
 }
 
+// A slot whose walls have a groove at mid-height (x 3..9, z 6..8): the upper walls are
+// exactly in the planes of the lower ones.
+RawMesh grooved_slot_part(const TestPartOptions& o) {
+  GridModel m;
+  m.name = "grooved_slot";
+  m.g[0] = {0, 3, 4, 8, 9, 12};
+  m.g[1] = {0, 10};
+  m.g[2] = {0, 4, 6, 8, 10};
+  m.filled = [](int i, int, int k) {
+    const bool slot = i == 2 && k >= 1;
+    const bool groove = k == 2 && i >= 1 && i <= 3;
+    return !(slot || groove);
+  };
+  m.rename = {{"z+4", "floor"}, {"x+4_0", "lower_x0"}, {"x-8_0", "lower_x1"},
+              {"x+4_1", "upper_x0"}, {"x-8_1", "upper_x1"}};
+  return build(m, o);
+}
+
 RawMesh through_hole_part(const TestPartOptions& o) {
   GridModel m;
   m.name = "through_hole";
@@ -384,6 +402,7 @@ std::vector<NamedTestPart> all_test_parts() {
           {"through_hole", through_hole_part},
           {"pocket", pocket_part},
           {"drafted_pocket", drafted_pocket_part},
+          {"grooved_slot", grooved_slot_part},
           {"grooved_pocket", grooved_pocket_part},
           {"grooved_pocket_rim_vertex", grooved_pocket_rim_vertex_part},
           {"step", step_part},

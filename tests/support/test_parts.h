@@ -31,6 +31,7 @@ struct TestPartOptions {
 // Every part is scaled by 12 so that quad centers stay integer.
 RawMesh box_part(const TestPartOptions& o = {});            // 10 x 6 x 4 block
 RawMesh slot_part(const TestPartOptions& o = {});           // groove along y, open ends
+RawMesh grooved_slot_part(const TestPartOptions& o = {});   // the slot, a groove in both walls
 RawMesh through_hole_part(const TestPartOptions& o = {});   // square hole along z
 RawMesh pocket_part(const TestPartOptions& o = {});         // blind square pocket
 RawMesh drafted_pocket_part(const TestPartOptions& o = {}); // walls lean out 1 in 4
