@@ -271,7 +271,7 @@ RawMesh drafted_pocket_part(const TestPartOptions& o) {
   return build(m, o);
 }
 
-RawMesh grooved_pocket_part(const TestPartOptions& o) {
+GridModel grooved_pocket_model() {
   GridModel m;
   m.name = "grooved_pocket";
   m.g[0] = {0, 3, 4, 8, 9, 12};
@@ -295,33 +295,23 @@ RawMesh grooved_pocket_part(const TestPartOptions& o) {
       else if (p[k] == 8) p[k] = 7;
     }
   };
-  return build(m, o);
+  return m;
 }
 
+RawMesh grooved_pocket_part(const TestPartOptions& o) { return build(grooved_pocket_model(), o); }
+
 RawMesh grooved_pocket_rim_vertex_part(const TestPartOptions& o) {
-  GridModel m;
+  GridModel m = grooved_pocket_model();
   m.name = "grooved_pocket_rim_vertex";
-  m.g[0] = {0, 3, 4, 8, 9, 12};
-  m.g[1] = {0, 3, 4, 6, 8, 9, 12};
-  m.g[2] = {0, 4, 6, 8, 10};
+  m.g[1] = {0, 3, 4, 6, 8, 9, 12};  // a grid line at y = 6: index j shifts by one above it
   m.filled = [](int i, int j, int k) {
     const bool bore = i == 2 && j >= 2 && j <= 3 && k >= 1;
     const bool groove = k == 2 && i >= 1 && i <= 3 && j >= 1 && j <= 4;
     return !(bore || groove);
   };
-  m.rename = {{"z+4", "floor"},          {"z+6", "groove_floor"}, {"z-8", "groove_ceiling"},
-              {"z+10", "top"},           {"x+4_0", "lower_x0"},   {"x-8_0", "lower_x1"},
-              {"y+4_0", "lower_y0"},     {"y-8_0", "lower_y1"},   {"x+4_1", "upper_x0"},
-              {"x-8_1", "upper_x1"},     {"y+4_1", "upper_y0"},   {"y-8_1", "upper_y1"}};
-  m.move = [](I3& p) {
-    if (p[2] == 0) {  // as in grooved_pocket_part
-      for (int k = 0; k < 2; ++k) {
-        if (p[k] == 4) p[k] = 5;
-        else if (p[k] == 8) p[k] = 7;
-      }
-    } else if (p[0] == 4 && p[1] == 6 && (p[2] == 4 || p[2] == 6)) {
-      p[1] = 5;
-    }
+  m.move = [bottom = m.move](I3& p) {
+    bottom(p);
+    if (p[0] == 4 && p[1] == 6 && (p[2] == 4 || p[2] == 6)) p[1] = 5;
   };
   return build(m, o);
 }
