@@ -269,6 +269,56 @@ TEST_P(Variants, GroovedSlotFloorAndLowerWallsSeeTheHalfCircle) {
   }
 }
 
+// Zero clearance inside a 2-cell of the LVM: the floor of a pocket whose walls lean out
+// and back in to an opening of exactly the floor's outline. Every direction off the axis
+// is blocked by the overhang; along the axis the rays from the floor's rim run up past the
+// opening's rim, touching it. The floor's LVM is the cone the lower walls leave (a 2-cell),
+// and the axis lies inside it, where the occluded cells only meet: a seam.
+TEST_P(Variants, FlaredPocketFloorSeesTheAxisThroughAnOpeningOfItsOwnSize) {
+  const auto o = GetParam();
+  Built b = build(test::flared_pocket_part(o));
+  auto s = test::triangles_of(b.part.mesh(), b.raw, {"floor"});
+  SurfaceVisibility vis = visibility(b.part, s);
+  ASSERT_TRUE(vis.gvm.has_value());
+  EXPECT_EQ(vis.lvm.dimension(), 2) << vis.lvm.description();
+  EXPECT_TRUE(*vis.gvm == sphere::SphericalImage::point(rotated(o, 0, 0, 1))) << vis.gvm->description();
+  // The lower walls face up and in, but their rays along the axis run into the overhang.
+  sphere::SphericalImage with_walls = gvm_of(b, {"floor", "lower_x0", "lower_x1", "lower_y0", "lower_y1"});
+  EXPECT_TRUE(with_walls.is_empty()) << with_walls.description();
+}
+
+// The same section as a slot through the part (10 long): the two lips are the occluders,
+// and the directions they leave, in the slot's plane of symmetry, are exactly where their
+// occluded cells meet, inside the floor's LVM (a 2-cell). The floor sees that half circle
+// as far as (0, +-5, 2), where the ray from the floor's far end rises to the mouth (4)
+// over the slot's length; flatter, the rays leave through the slot's open ends, in a 2-cell
+// at each end. The same with a boss on the top whose face is flush with the mouth's edge
+// (the rays from the floor's edge run up along it).
+TEST_P(Variants, FlaredSlotFloorSeesTheHalfCircleBetweenTheLips) {
+  const auto o = GetParam();
+  for (auto make : {test::flared_slot_part, test::flared_slot_boss_part}) {
+    Built b = build(make(o));
+    auto s = test::triangles_of(b.part.mesh(), b.raw, {"floor"});
+    SurfaceVisibility vis = visibility(b.part, s);
+    ASSERT_TRUE(vis.gvm.has_value());
+    const sphere::SphericalImage& g = *vis.gvm;
+    EXPECT_EQ(vis.lvm.dimension(), 2) << vis.lvm.description();
+    ASSERT_EQ(g.curves().size(), 1u) << b.raw.source << ": " << g.description();
+    const sphere::Arc& seam = g.curves()[0];
+    EXPECT_TRUE(exact::parallel(seam.normal, rotated(o, 1, 0, 0))) << g.description();
+    for (const ExactVec& d : {rotated(o, 0, -5, 2), rotated(o, 0, 5, 2), rotated(o, 0, 0, 1)}) {
+      EXPECT_TRUE(sphere::arc_contains(seam, d)) << g.description();
+    }
+    EXPECT_FALSE(sphere::arc_contains(seam, rotated(o, 0, 6, 2))) << g.description();
+    EXPECT_EQ(g.faces().size(), 2u) << g.description();
+    EXPECT_TRUE(g.contains(rotated(o, 0, 10, 1)));
+    EXPECT_TRUE(g.contains(rotated(o, 0, -10, 1)));
+    for (int sx : {-1, 1}) {
+      for (int sy : {-1, 0, 1}) EXPECT_FALSE(g.contains(rotated(o, sx, sy, 100))) << sx << " " << sy;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},

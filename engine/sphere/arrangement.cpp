@@ -22,30 +22,6 @@ bool strictly_inside(const ArrangementArc& a, const ExactVec& x) {
          positive(exact::sign_det(a.normal, x, a.to));
 }
 
-Box point_box(const exact::UnitEstimate& e) {
-  Box b;
-  for (int i = 0; i < 3; ++i) {
-    b.lo[i] = e.unit[i] - e.radius;
-    b.hi[i] = e.unit[i] + e.radius;
-  }
-  return b;
-}
-
-// A box around the whole arc: the chord's box grown by the sagitta of the arc.
-Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
-  double chord = 0;
-  for (int i = 0; i < 3; ++i) chord += (a.unit[i] - b.unit[i]) * (a.unit[i] - b.unit[i]);
-  chord = std::min(2.0, std::sqrt(chord));
-  double half_angle = std::asin(chord / 2);
-  double grow = (1 - std::cos(half_angle)) * 1.01 + a.radius + b.radius + 1e-12;
-  Box box;
-  for (int i = 0; i < 3; ++i) {
-    box.lo[i] = std::min(a.unit[i], b.unit[i]) - grow;
-    box.hi[i] = std::max(a.unit[i], b.unit[i]) + grow;
-  }
-  return box;
-}
-
 }  // namespace
 
 Arrangement::Arrangement(std::span<const ArrangementArc> arcs,

@@ -1,6 +1,7 @@
 #include "sphere/box_tree.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace gvm::sphere {
@@ -18,6 +19,29 @@ Box merge(const Box& a, const Box& b) {
 }
 
 }  // namespace
+
+Box point_box(const exact::UnitEstimate& e) {
+  Box b;
+  for (int i = 0; i < 3; ++i) {
+    b.lo[i] = e.unit[i] - e.radius;
+    b.hi[i] = e.unit[i] + e.radius;
+  }
+  return b;
+}
+
+Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
+  double chord = 0;
+  for (int i = 0; i < 3; ++i) chord += (a.unit[i] - b.unit[i]) * (a.unit[i] - b.unit[i]);
+  chord = std::min(2.0, std::sqrt(chord));
+  double half_angle = std::asin(chord / 2);
+  double grow = (1 - std::cos(half_angle)) * 1.01 + a.radius + b.radius + 1e-12;
+  Box box;
+  for (int i = 0; i < 3; ++i) {
+    box.lo[i] = std::min(a.unit[i], b.unit[i]) - grow;
+    box.hi[i] = std::max(a.unit[i], b.unit[i]) + grow;
+  }
+  return box;
+}
 
 BoxTree::BoxTree(std::span<const Box> boxes) : boxes_(boxes.begin(), boxes.end()) {
   order_.resize(boxes_.size());

@@ -10,11 +10,19 @@
 #include <utility>
 #include <vector>
 
+#include "exact/exact_vec.h"
+
 namespace gvm::sphere {
 
 struct Box {
   std::array<double, 3> lo, hi;
 };
+
+// A box around a direction given by its certified unit estimate.
+Box point_box(const exact::UnitEstimate& e);
+// A box around the whole minor arc between two directions: the chord's box grown by the
+// arc's sagitta.
+Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b);
 
 class BoxTree {
  public:

@@ -20,7 +20,9 @@
 #include "visibility/occluded_directions.h"
 #include "visibility/occluder_beam.h"
 #include "visibility/occlusion_probe.h"
+#include "visibility/open_cells.h"
 #include "visibility/redundant_faces.h"
+#include "visibility/seam_candidates.h"
 
 namespace gvm {
 namespace {
@@ -32,6 +34,7 @@ using sphere::ArrangementPoint;
 
 constexpr int kLvm = 0;        // layer of LVM(S + N_S): coverage 1 inside its 2-cells
 constexpr int kOcclusion = 1;  // layer of the closure of the occluded directions
+constexpr int kSeam = 2;       // candidates for seams of the occlusion (seam_candidates.h)
 
 // The vertices q - p of the sum, each built once: arcs that share an endpoint then share
 // its node, which lets the exact predicates see zeros by construction.
@@ -80,10 +83,12 @@ std::vector<uint32_t> faces_that_matter(const std::vector<std::vector<ExactVec>>
   return kept;
 }
 
-// The closed occluded region and the reference direction it was labelled from.
+// The closed occluded region, the reference direction it was labelled from, and the cells
+// whose open insides are occluded outright.
 struct Occlusion {
   sphere::Region region;
   ExactVec reference;
+  OpenCells cells;
 };
 
 // The closure of the occluded directions by the effective Minkowski envelope (paper
@@ -102,13 +107,17 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
   if (stats) stats->envelope = eme.statistics;
   SumVertices sum(mesh);
   std::vector<std::vector<ExactVec>> faces;
+  std::vector<OpenCells::Cell> open;
   Interruptions interruptions;
   for (const EnvelopeFace& f : eme.faces) {
     interruptions.tick();
-    std::vector<ExactVec> v;
-    for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
-    for (size_t i = 0; i < v.size(); ++i) circles.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
-    faces.push_back(std::move(v));
+    OpenCells::Cell cell;
+    for (auto [q, p] : f.vertices) cell.vertices.push_back(sum.at(q, p));
+    const std::vector<ExactVec>& v = cell.vertices;
+    for (size_t i = 0; i < v.size(); ++i) cell.normals.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
+    circles.insert(circles.end(), cell.normals.begin(), cell.normals.end());
+    faces.push_back(v);
+    open.push_back(std::move(cell));
   }
   if (clip) circles.insert(circles.end(), clip->normals().begin(), clip->normals().end());
   const std::vector<uint32_t> kept = faces_that_matter(faces, clip);
@@ -139,7 +148,7 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     }
     return coverage;
   };
-  return {occluded_directions(cells, r), r};
+  return {occluded_directions(cells, r), r, OpenCells(std::move(open))};
 }
 
 // The same closure by convex decomposition: the pairwise occlusion maps are the cells.
@@ -178,7 +187,21 @@ Occlusion convex_decomposition_occlusion(const SolidMesh& mesh, std::span<const 
     return arcs;
   };
   cells.covers_reference = [&](uint32_t i) { return maps[i].contains(r); };
-  return {occluded_directions(cells, r), r};
+  std::vector<OpenCells::Cell> open;
+  for (const sphere::SphericalImage& m : maps) {
+    for (const sphere::Face& f : m.faces()) {
+      if (!f.convex) continue;
+      OpenCells::Cell cell;
+      for (const sphere::Arc& arc : f.loops[0].arcs) {
+        cell.vertices.push_back(arc.start);
+        cell.normals.push_back(arc.normal);
+        cell.minor_sides = cell.minor_sides && !arc.full &&
+                           exact::sign_det(arc.normal, arc.start, arc.end) == Sign::kPositive;
+      }
+      open.push_back(std::move(cell));
+    }
+  }
+  return {occluded_directions(cells, r), r, OpenCells(std::move(open))};
 }
 
 // The GVM with the visible pieces of partly occluded arcs added (a piece whose ends
@@ -228,6 +251,29 @@ sphere::SphericalImage with_pieces(const sphere::SphericalImage& gvm,
   return out;
 }
 
+// The visible parts of an open edge of a seam candidate inside Int(GOM) and a 2-cell of the
+// LVM: the closed pieces that no open cell holds, decided by the probe, their ends (on the
+// sides of cells) as well.
+std::vector<sphere::Arc> visible_on_seam(const sphere::Arc& open_edge, OpenCells& open,
+                                         const OcclusionProbe& probe) {
+  std::vector<sphere::Arc> visible;
+  auto add_point = [&](const ExactVec& x) {
+    if (exact::same_direction(x, open_edge.start) || exact::same_direction(x, open_edge.end)) return;
+    for (const sphere::Arc& v : visible) {
+      if (sphere::arc_contains(v, x)) return;
+    }
+    if (!probe.occluded(x)) visible.push_back({x, x, open_edge.normal});
+  };
+  for (const sphere::Arc& piece : open.uncovered(open_edge)) {
+    if (!exact::same_direction(piece.start, piece.end)) {
+      for (sphere::Arc& v : probe.unoccluded(piece)) visible.push_back(std::move(v));
+    }
+    add_point(piece.start);
+    add_point(piece.end);
+  }
+  return visible;
+}
+
 }  // namespace
 
 sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
@@ -244,13 +290,17 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   sphere::add_image(lvm, kLvm, arcs, points);
+  const SeamCandidates seams = seam_candidates(mesh, s, beam, lvm, window);
+  for (const ArrangementArc& a : seams.arcs) arcs.push_back({a.from, a.to, a.normal, kSeam, 0});
+  for (const ExactVec& p : seams.points) points.push_back({p, kSeam});
 
-  // The reference direction lies on no circle of the LVM or of any cell, and on no point.
+  // The reference direction lies on no circle of the LVM, of any cell or of any candidate,
+  // and on no point.
   std::vector<ExactVec> circles, point_dirs;
   for (const ArrangementArc& a : arcs) circles.push_back(a.normal);
   for (const auto& p : points) point_dirs.push_back(p.p);
   const auto union_start = std::chrono::steady_clock::now();
-  const auto [occluded, r] =
+  auto [occluded, r, open_cells] =
       method == OcclusionMethod::kEffectiveMinkowskiEnvelope
           ? envelope_occlusion(mesh, s, beam, window, clip ? &*clip : nullptr, circles, point_dirs, stats)
           : convex_decomposition_occlusion(mesh, s, beam, window, circles, point_dirs, stats);
@@ -274,8 +324,9 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   auto occluded_face = [&](uint32_t f) { return arr.coverage(f, kOcclusion) > 0; };
   auto face_in = [&](uint32_t f) { return in_lvm_face(f) && !occluded_face(f); };
   // A cell is in Int(GOM) iff every face around it is covered -- but the points and arcs
-  // of the LVM in there may still be visible (rays along them that only graze O): the
-  // probe decides them from the rays (occlusion_probe.h).
+  // of the LVM in there may still be visible (rays along them that only graze O), and so
+  // may the seam candidates inside its 2-cells: the probe decides them from the rays
+  // (occlusion_probe.h).
   const OcclusionProbe probe(mesh, s, beam);
   std::vector<sphere::Arc> grazing;  // visible parts of arcs of the LVM in Int(GOM)
   std::vector<uint8_t> edge_visible(arr.edges().size(), 0);
@@ -289,9 +340,9 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
     if (!on_lvm_arc && !in_lvm_face(left) && !in_lvm_face(right)) continue;
     if (!occluded_face(left) || !occluded_face(right)) {
       edge_visible[e] = 1;
-    } else if (on_lvm_arc) {
+    } else if (on_lvm_arc || arr.edge_on_layer(e, kSeam)) {
       const sphere::Arc arc{arr.vertices()[edge.v0].p, arr.vertices()[edge.v1].p, edge.normal};
-      std::vector<sphere::Arc> pieces = probe.unoccluded(arc);
+      std::vector<sphere::Arc> pieces = on_lvm_arc ? probe.unoccluded(arc) : visible_on_seam(arc, open_cells, probe);
       ++probed_arcs;
       if (pieces.size() == 1 && exact::same_direction(pieces[0].start, arc.start) &&
           exact::same_direction(pieces[0].end, arc.end)) {
@@ -303,16 +354,18 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   }
   auto vertex_in = [&](uint32_t v) {
     const auto& vert = arr.vertices()[v];
-    bool in_lvm = arr.vertex_has_point(v, kLvm);
+    bool on_lvm = arr.vertex_has_point(v, kLvm);  // a point or on an arc: not in a 2-cell
+    bool in_lvm = on_lvm;
     bool all_occluded = true;
     for (uint32_t h : vert.out) {
-      in_lvm |= arr.edge_on_layer(half[h].edge, kLvm);
-      in_lvm |= in_lvm_face(half[h].face);
+      on_lvm |= arr.edge_on_layer(half[h].edge, kLvm);
+      in_lvm |= on_lvm || in_lvm_face(half[h].face);
       all_occluded &= occluded_face(half[h].face);
     }
     if (vert.out.empty()) all_occluded = occluded_face(0);
     if (!in_lvm) return false;
     if (!all_occluded) return true;
+    if (!on_lvm && open_cells.hold(vert.p)) return false;
     ++probed_points;
     const bool visible = !probe.occluded(vert.p);
     visible_points += visible;
@@ -322,8 +375,8 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
       arr.extract(face_in, [&](uint32_t e) { return edge_visible[e] != 0; }, vertex_in);
   if (!grazing.empty()) gvm = with_pieces(gvm, grazing);
   if (probed_arcs + probed_points > 0) {
-    spdlog::debug("occlusion probe: {} arcs of the LVM inside the occluded directions ({} visible "
-                  "pieces), {} points ({} visible)",
+    spdlog::debug("occlusion probe: {} arcs of the LVM or seam candidates inside the occluded directions "
+                  "({} visible pieces), {} points ({} visible)",
                   probed_arcs, grazing.size(), probed_points, visible_points);
   }
   if (stats) {

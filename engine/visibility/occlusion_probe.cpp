@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "exact/interrupt.h"
+#include "sphere/arc_intervals.h"
 #include "sphere/point_in_face.h"
 #include "sphere/spherical_image.h"
 #include "visibility/convex_decomposition.h"
@@ -22,6 +23,10 @@ namespace gvm {
 namespace {
 
 using exact::ExactVec;
+using sphere::ArcOrder;
+using sphere::clip;
+using sphere::complement;
+using sphere::Interval;
 using Corners = std::array<ExactVec, 3>;
 
 Corners corners(const SolidMesh& mesh, uint32_t t) {
@@ -55,71 +60,6 @@ bool separated(std::span<const ExactVec> axes, std::span<const ExactVec> t, cons
     if (separates) return true;
   }
   return false;
-}
-
-// Points of one arc shorter than 180 degrees around n, in their order along it.
-struct ArcOrder {
-  const ExactVec& n;
-  bool before(const ExactVec& x, const ExactVec& y) const {
-    return exact::sign_det(n, x, y) == Sign::kPositive;
-  }
-};
-
-// An open sub-arc (lo, hi) of the probed arc.
-struct Interval {
-  ExactVec lo, hi;
-};
-
-// The directions of the open arc in every open half-space {x . m > 0}: one open
-// interval, or false when there are none.
-// `whole` is set when no half-space cuts the arc.
-bool clip(const sphere::Arc& arc, std::span<const ExactVec> normals, Interval& out, bool* whole) {
-  const ArcOrder order{arc.normal};
-  out = {arc.start, arc.end};
-  *whole = true;
-  for (const ExactVec& m : normals) {
-    const Sign sa = exact::sign_dot(arc.start, m), sb = exact::sign_dot(arc.end, m);
-    // x . m is a sinusoid along the circle with zeros 180 degrees apart: on an arc
-    // shorter than that it changes sign at most once.
-    if (sa != Sign::kNegative && sb != Sign::kNegative && (sa != Sign::kZero || sb != Sign::kZero)) {
-      continue;  // positive on the whole open arc
-    }
-    if (sa == Sign::kZero || sb == Sign::kZero || sa == sb) return *whole = false;
-    ExactVec c = exact::cross(arc.normal, m);
-    if (!order.before(arc.start, c)) c = -c;
-    *whole = false;
-    if (sa == Sign::kPositive) {
-      if (order.before(c, out.hi)) out.hi = c;
-    } else if (order.before(out.lo, c)) {
-      out.lo = c;
-    }
-    if (!order.before(out.lo, out.hi)) return false;
-  }
-  return true;
-}
-
-// The closed pieces of the open arc outside every open interval (a piece with equal
-// ends is a point between two intervals).
-std::vector<sphere::Arc> complement(const sphere::Arc& arc, std::vector<Interval> covered) {
-  const ArcOrder order{arc.normal};
-  std::sort(covered.begin(), covered.end(),
-            [&](const Interval& x, const Interval& y) { return order.before(x.lo, y.lo); });
-  std::vector<sphere::Arc> pieces;
-  ExactVec frontier = arc.start;  // everything before it is decided
-  bool at_start = true;           // the frontier is the arc's own (excluded) start
-  for (const Interval& c : covered) {
-    if (order.before(frontier, c.lo)) {
-      pieces.push_back({frontier, c.lo, arc.normal});
-    } else if (!at_start && !order.before(c.lo, frontier)) {
-      pieces.push_back({frontier, frontier, arc.normal});
-    }
-    if (order.before(frontier, c.hi)) {
-      frontier = c.hi;
-      at_start = false;
-    }
-  }
-  if (order.before(frontier, arc.end)) pieces.push_back({frontier, arc.end, arc.normal});
-  return pieces;
 }
 
 void add_both_signs(std::vector<ExactVec>& axes) {

@@ -42,6 +42,31 @@ struct Quad {
   std::array<I3, 4> corners; // grid indices, counter-clockwise seen from outside
 };
 
+// A grid vertex where the model puts it (before scaling).
+I3 placed(const GridModel& gm, const I3& gi) {
+  I3 p{gm.g[0][gi[0]], gm.g[1][gi[1]], gm.g[2][gi[2]]};
+  if (gm.move) gm.move(p);
+  return p;
+}
+
+// Whether two quads still lie in one plane once the model's move has bent its walls.
+bool coplanar_after_move(const GridModel& gm, const Quad& a, const Quad& b) {
+  const I3 o = placed(gm, a.corners[0]);
+  auto d = [&](const I3& gi) {
+    const I3 p = placed(gm, gi);
+    return I3{p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+  };
+  const I3 u = d(a.corners[1]), v = d(a.corners[3]);
+  const I3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  for (const auto* q : {&a, &b}) {
+    for (const I3& c : q->corners) {
+      const I3 w = d(c);
+      if (n[0] * w[0] + n[1] * w[1] + n[2] * w[2] != 0) return false;
+    }
+  }
+  return true;
+}
+
 RawMesh build(const GridModel& gm, const TestPartOptions& o) {
   const int n[3] = {static_cast<int>(gm.g[0].size()) - 1, static_cast<int>(gm.g[1].size()) - 1,
                     static_cast<int>(gm.g[2].size()) - 1};
@@ -91,6 +116,7 @@ RawMesh build(const GridModel& gm, const TestPartOptions& o) {
     const Quad& Q = quads[q];
     for (auto [du, dv] : {std::pair{1, 0}, std::pair{0, 1}}) {
       auto it = at.find({Q.axis, Q.dir, Q.plane, Q.cu + du, Q.cv + dv});
+      if (it != at.end() && !coplanar_after_move(gm, Q, quads[it->second])) continue;
       if (it != at.end()) {
         uint32_t a = find(q), b = find(it->second);
         if (a != b) comp[std::max(a, b)] = std::min(a, b);
@@ -316,6 +342,44 @@ RawMesh grooved_pocket_rim_vertex_part(const TestPartOptions& o) {
   return build(m, o);
 }
 
+// Zero clearance: the walls lean out by 1 from the floor up to z = 6 and back in to the
+// opening at z = 8, which has exactly the floor's outline (x and y in [4, 8]).
+GridModel flared_pocket_model() {
+  GridModel m = pocket_model();
+  m.name = "flared_pocket";
+  m.g[2] = {0, 4, 6, 8};
+  m.filled = [](int i, int j, int k) { return !(i == 1 && j == 1 && k >= 1); };
+  m.rename = {{"z+4", "floor"},     {"z+8", "top"},       {"x+4_0", "lower_x0"}, {"x-8_0", "lower_x1"},
+              {"y+4_0", "lower_y0"}, {"y-8_0", "lower_y1"}, {"x+4_1", "upper_x0"}, {"x-8_1", "upper_x1"},
+              {"y+4_1", "upper_y0"}, {"y-8_1", "upper_y1"}};
+  m.move = [](I3& p) {
+    if (p[2] != 6) return;
+    if ((p[0] == 4 || p[0] == 8) && (p[1] == 4 || p[1] == 8)) {
+      p[0] += p[0] == 4 ? -1 : 1;
+      p[1] += p[1] == 4 ? -1 : 1;
+    }
+  };
+  return m;
+}
+
+// A slot along y, through the part, whose walls lean out by 2 from the floor up to z = 6
+// and back in to a mouth exactly as wide as its floor (x in [4, 8]). With `boss`, a block
+// stands on the top beside the mouth, its face flush with the mouth's edge at x = 4.
+GridModel flared_slot_model(bool boss) {
+  GridModel m;
+  m.name = boss ? "flared_slot_boss" : "flared_slot";
+  m.g[0] = {0, 4, 8, 12};
+  m.g[1] = {0, 10};
+  m.g[2] = boss ? std::vector<int64_t>{0, 4, 6, 8, 10} : std::vector<int64_t>{0, 4, 6, 8};
+  m.filled = [](int i, int, int k) { return !(i == 1 && k >= 1) && !(k == 3 && i != 0); };
+  m.rename = {{"z+4", "floor"}, {"x+4_0", "lower_x0"}, {"x-8_0", "lower_x1"},
+              {"x+4_1", "upper_x0"}, {"x-8_1", "upper_x1"}, {"x+4_2", "boss_side"}};
+  m.move = [](I3& p) {
+    if (p[2] == 6 && (p[0] == 4 || p[0] == 8)) p[0] += p[0] == 4 ? -2 : 2;
+  };
+  return m;
+}
+
 RawMesh step_part(const TestPartOptions& o) {
   GridModel m;
   m.name = "step";
@@ -326,6 +390,10 @@ RawMesh step_part(const TestPartOptions& o) {
   m.rename = {{"z+4", "step_floor"}, {"x+6", "riser"}, {"z+8", "top"}};
   return build(m, o);
 }
+
+RawMesh flared_pocket_part(const TestPartOptions& o) { return build(flared_pocket_model(), o); }
+RawMesh flared_slot_part(const TestPartOptions& o) { return build(flared_slot_model(false), o); }
+RawMesh flared_slot_boss_part(const TestPartOptions& o) { return build(flared_slot_model(true), o); }
 
 RawMesh tslot_closed_part(const TestPartOptions& o) { return build(tslot_model(true), o); }
 RawMesh tslot_open_part(const TestPartOptions& o) { return build(tslot_model(false), o); }
@@ -395,6 +463,9 @@ std::vector<NamedTestPart> all_test_parts() {
           {"grooved_slot", grooved_slot_part},
           {"grooved_pocket", grooved_pocket_part},
           {"grooved_pocket_rim_vertex", grooved_pocket_rim_vertex_part},
+          {"flared_pocket", flared_pocket_part},
+          {"flared_slot", flared_slot_part},
+          {"flared_slot_boss", flared_slot_boss_part},
           {"step", step_part},
           {"tslot_closed", tslot_closed_part},
           {"tslot_open", tslot_open_part},

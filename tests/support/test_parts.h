@@ -40,6 +40,11 @@ RawMesh grooved_pocket_part(const TestPartOptions& o = {}); // pocket, groove ro
 // lower wall there a single quad across it (the floor's and groove floor's grid vertices
 // at y = 6 on that wall moved to y = 5): rays up the wall pass that rim vertex.
 RawMesh grooved_pocket_rim_vertex_part(const TestPartOptions& o = {});
+// Zero clearance: walls lean out from the floor and back in to an opening (or a slot's
+// mouth) exactly the floor's size; the slot optionally with a boss flush with its mouth.
+RawMesh flared_pocket_part(const TestPartOptions& o = {});
+RawMesh flared_slot_part(const TestPartOptions& o = {});
+RawMesh flared_slot_boss_part(const TestPartOptions& o = {});
 RawMesh step_part(const TestPartOptions& o = {});           // L-shaped step along y
 RawMesh tslot_closed_part(const TestPartOptions& o = {});   // T-slot closed at both ends
 RawMesh tslot_open_part(const TestPartOptions& o = {});     // T-slot open at both ends

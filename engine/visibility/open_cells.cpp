@@ -1,0 +1,79 @@
+#include "visibility/open_cells.h"
+
+#include <tbb/parallel_for.h>
+
+#include "sphere/arc_intervals.h"
+
+namespace gvm {
+namespace {
+
+using exact::ExactVec;
+
+bool strictly_inside(const OpenCells::Cell& c, const ExactVec& x) {
+  for (const ExactVec& n : c.normals) {
+    if (exact::sign_dot(x, n) != Sign::kPositive) return false;
+  }
+  return true;
+}
+
+// A box around the closed cell: around its sides, and reaching +-1 along an axis whose
+// direction the cell holds (the only place inside where a coordinate can peak).
+sphere::Box box_of(const OpenCells::Cell& c) {
+  if (!c.minor_sides || c.vertices.empty()) return {{-1, -1, -1}, {1, 1, 1}};
+  std::vector<exact::UnitEstimate> v;
+  for (const ExactVec& x : c.vertices) v.push_back(exact::unit_estimate(x));
+  sphere::Box box = sphere::arc_box(v.back(), v.front());
+  for (size_t k = 0; k + 1 < v.size(); ++k) {
+    const sphere::Box side = sphere::arc_box(v[k], v[k + 1]);
+    for (int i = 0; i < 3; ++i) {
+      box.lo[i] = std::min(box.lo[i], side.lo[i]);
+      box.hi[i] = std::max(box.hi[i], side.hi[i]);
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int sign : {-1, 1}) {
+      Point3 axis{0, 0, 0};
+      (i == 0 ? axis.x : i == 1 ? axis.y : axis.z) = sign;
+      const ExactVec e = ExactVec::from_point(axis);
+      bool held = true;
+      for (const ExactVec& n : c.normals) held = held && exact::sign_dot(e, n) != Sign::kNegative;
+      if (held) (sign > 0 ? box.hi[i] : box.lo[i]) = sign;
+    }
+  }
+  return box;
+}
+
+}  // namespace
+
+void OpenCells::index() {
+  std::vector<sphere::Box> boxes(cells_.size());
+  tbb::parallel_for(size_t{0}, cells_.size(), [&](size_t i) { boxes[i] = box_of(cells_[i]); });
+  tree_.emplace(boxes);
+}
+
+std::vector<uint32_t> OpenCells::near(const sphere::Box& query) {
+  if (!tree_) index();
+  return tree_->overlapping(query);
+}
+
+bool OpenCells::hold(const ExactVec& u) {
+  for (uint32_t i : near(sphere::point_box(exact::unit_estimate(u)))) {
+    if (strictly_inside(cells_[i], u)) return true;
+  }
+  return false;
+}
+
+std::vector<sphere::Arc> OpenCells::uncovered(const sphere::Arc& open_arc) {
+  std::vector<sphere::Interval> covered;
+  for (uint32_t i : near(sphere::arc_box(exact::unit_estimate(open_arc.start), exact::unit_estimate(open_arc.end)))) {
+    sphere::Interval inside;
+    bool whole = false;
+    if (sphere::clip(open_arc, cells_[i].normals, inside, &whole)) {
+      if (whole) return {};
+      covered.push_back(std::move(inside));
+    }
+  }
+  return sphere::complement(open_arc, std::move(covered));
+}
+
+}  // namespace gvm
