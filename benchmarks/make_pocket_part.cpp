@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
   }
   const int n = std::atoi(argv[1]), k = std::atoi(argv[2]);
   // FLARE: how much wider the opening is than the floor (default 2). With 0 the floor's
-  // rim looks straight up past the opening's rim, touching it: see the README (limits).
+  // rim looks straight up past the opening's rim, touching it: the floor sees the axis
+  // alone (tests/data/flared_pocket_16_4_0.off).
   const double flare = argc == 4 ? std::atof(argv[3]) : 2;
   if (n < 3 || k < 2) {
     std::fprintf(stderr, "gvm_make_pocket_part: N >= 3 and K >= 2\n");

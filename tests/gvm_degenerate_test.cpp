@@ -319,6 +319,27 @@ TEST_P(Variants, FlaredSlotFloorSeesTheHalfCircleBetweenTheLips) {
   }
 }
 
+// The benchmark's round flared pocket with its opening exactly the floor's 16-gon
+// (`gvm_make_pocket_part 16 4 0`, checked in): the floor's LVM is a 2-cell of 2.09 sr and
+// its GVM the axis alone. (The floor with the pocket wall has an empty LVM.)
+TEST(FlaredPocketBenchmarkPart, FloorSeesTheAxis) {
+  auto solid = load_solid(std::string(GVM_TEST_DATA_DIR) + "/flared_pocket_16_4_0.off");
+  ASSERT_TRUE(solid.ok()) << solid.status().message();
+  std::vector<uint32_t> floor;
+  for (uint32_t t = 0; t < solid->triangles.size(); ++t) {
+    bool on_floor = true;
+    for (uint32_t v : solid->triangles[t]) on_floor = on_floor && solid->points[v].z == -15;
+    if (on_floor) floor.push_back(t);
+  }
+  ASSERT_EQ(floor.size(), 16u);
+  auto part = Part::analyze(std::move(*solid), PartOptions{});
+  ASSERT_TRUE(part.ok());
+  SurfaceVisibility vis = visibility(*part, floor);
+  ASSERT_TRUE(vis.gvm.has_value());
+  EXPECT_EQ(vis.lvm.dimension(), 2);
+  EXPECT_TRUE(*vis.gvm == sphere::SphericalImage::point(ExactVec::from_point({0, 0, 1}))) << vis.gvm->description();
+}
+
 INSTANTIATE_TEST_SUITE_P(Gvm, Variants,
                          ::testing::Values(test::TestPartOptions{0, false, false},
                                            test::TestPartOptions{1, false, false},

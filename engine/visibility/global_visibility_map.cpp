@@ -292,10 +292,9 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   sphere::add_image(lvm, kLvm, arcs, points);
   const SeamCandidates seams = seam_candidates(mesh, s, beam, lvm, window);
   for (const ArrangementArc& a : seams.arcs) arcs.push_back({a.from, a.to, a.normal, kSeam, 0});
-  for (const ExactVec& p : seams.points) points.push_back({p, kSeam});
 
-  // The reference direction lies on no circle of the LVM, of any cell or of any candidate,
-  // and on no point.
+  // The reference direction lies on no circle of the LVM, of any cell or of any candidate
+  // arc, and on no point.
   std::vector<ExactVec> circles, point_dirs;
   for (const ArrangementArc& a : arcs) circles.push_back(a.normal);
   for (const auto& p : points) point_dirs.push_back(p.p);
@@ -328,7 +327,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   // may the seam candidates inside its 2-cells: the probe decides them from the rays
   // (occlusion_probe.h).
   const OcclusionProbe probe(mesh, s, beam);
-  std::vector<sphere::Arc> grazing;  // visible parts of arcs of the LVM in Int(GOM)
+  std::vector<sphere::Arc> grazing;  // visible parts of arcs of the LVM and of seams in Int(GOM)
   std::vector<uint8_t> edge_visible(arr.edges().size(), 0);
   int probed_arcs = 0, probed_points = 0, visible_points = 0;
   Interruptions interruptions(64);
@@ -373,6 +372,16 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   };
   sphere::SphericalImage gvm =
       arr.extract(face_in, [&](uint32_t e) { return edge_visible[e] != 0; }, vertex_in);
+  // Seam candidate points are decided on their own (not in the arrangement: there are
+  // many, nearly all deep inside the occluded directions).
+  for (const ExactVec& p : seams.points) {
+    if (open_cells.hold(p) || gvm.contains(p)) continue;
+    ++probed_points;
+    if (!probe.occluded(p)) {
+      ++visible_points;
+      grazing.push_back({p, p, p});  // a point: equal ends (the normal is not used)
+    }
+  }
   if (!grazing.empty()) gvm = with_pieces(gvm, grazing);
   if (probed_arcs + probed_points > 0) {
     spdlog::debug("occlusion probe: {} arcs of the LVM or seam candidates inside the occluded directions "

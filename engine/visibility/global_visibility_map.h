@@ -2,7 +2,10 @@
 // projection of the effective Minkowski envelope of O_S + (-S) (Eq. 7). The projected
 // envelope's closed region is built by unions of groups of faces (sphere/region_union.h),
 // then overlaid with the LVM in one exact arrangement; the difference is non-regularized:
-// arcs and points of the LVM that no open occlusion covers survive.
+// arcs and points of the LVM that no open occlusion covers survive. Directions of Int(GOM)
+// whose rays only graze O_S are visible (Def. 2 of the paper): the occlusion probe
+// decides the arcs and points of the LVM in there, and the seams inside its 2-cells
+// (seam_candidates.h), so that the GVM is Def. 2 exactly.
 #pragma once
 
 #include <cstdint>

@@ -12,6 +12,7 @@
 
 #include "exact/predicates.h"
 #include "visibility/direction_window.h"
+#include "visibility/seam_pieces.h"
 #include "visibility/strip_events.h"
 
 namespace gvm {
@@ -136,10 +137,36 @@ ExactVec direction(const SolidMesh& mesh, uint32_t from, uint32_t to) {
   return ExactVec::from_point(mesh.points[to]) - ExactVec::from_point(mesh.points[from]);
 }
 
-void add_arc(const SolidMesh& mesh, uint32_t p0, uint32_t q0, uint32_t p1, uint32_t q1, const OpenLvm& lvm,
-             std::vector<sphere::ArrangementArc>& out) {
+// The arc of directions from p0 to q0 to those from p1 to q1 (one of each pair shared), when
+// it may meet the open LVM.
+void add_arc(const SolidMesh& mesh, uint32_t p0, uint32_t q0, uint32_t p1, uint32_t q1, int side,
+             const OpenLvm& lvm, std::vector<GrazingArc>& out) {
   const ExactVec a = direction(mesh, p0, q0), b = direction(mesh, p1, q1);
-  if (lvm.may_meet(a, b)) out.push_back({a, b, exact::cross(a, b), 0, 0});
+  if (lvm.may_meet(a, b)) out.push_back({{a, b, exact::cross(a, b), 0, 0}, side});
+}
+
+// The side of the circle of arc q - (a, b) that its contacts may occlude: towards q - r
+// (rays from the inside of triangle (a, b, r) reach q), i.e. the sign of
+// ((q - a) x (q - b)) . (q - r).
+int edge_to_corner_side(const SolidMesh& mesh, const std::array<uint32_t, 3>& e, uint32_t q) {
+  const auto& P = mesh.points;
+  return -static_cast<int>(orient3d(P[q], P[e[0]], P[e[1]], P[e[2]]));
+}
+
+// The side of the circle of arc (a, b) - p that its contacts may occlude, relative to
+// (a - p) x (b - p): where the triangles at (a, b) reach, and away from where S's
+// triangles at p reach (0 when both sides, or neither, can be told).
+int corner_to_edge_side(const SolidMesh& mesh, uint32_t p, const Fan& at_p, const std::array<uint32_t, 4>& e) {
+  const auto& P = mesh.points;
+  bool pos = false, neg = false;
+  auto note = [&](Sign s) {
+    pos = pos || s == Sign::kPositive;
+    neg = neg || s == Sign::kNegative;
+  };
+  note(orient3d(P[p], P[e[0]], P[e[1]], P[e[2]]));
+  note(orient3d(P[p], P[e[0]], P[e[1]], P[e[3]]));
+  for (uint32_t s : at_p.neighbours) note(-orient3d(P[p], P[e[0]], P[e[1]], P[s]));
+  return pos == neg ? 0 : pos ? 1 : -1;
 }
 
 // The contact tests below are true when the contact cannot be a seam's: it occludes u, or
@@ -176,106 +203,43 @@ bool corner_to_edge_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p
   return false;
 }
 
-// Whether, seen along u = q - p, direction x - (p or q) lies strictly inside the wedge
-// (y0, y1) at the same point: det(u, y0 - .., x - ..) > 0 and det(u, x - .., y1 - ..) > 0,
-// which are orientations of p, q and the two points.
-bool strictly_inside(const SolidMesh& mesh, uint32_t p, uint32_t q, uint32_t y0, uint32_t y1, uint32_t x) {
-  const auto& P = mesh.points;
-  return orient3d(P[p], P[q], P[y0], P[x]) == Sign::kPositive &&
-         orient3d(P[p], P[q], P[x], P[y1]) == Sign::kPositive;
-}
-
 // From border corner p to corner q: occluding when, seen along u = q - p, an edge at q
 // points strictly into a triangle of S at p, or an edge of S at p into a triangle at q.
+// Every angle test is a sign of det(u, a - p, b - p) = orient3d(p, q, a, b) (the same as
+// with b - q: u is q - p), so the signs between S's neighbours x of p and the neighbours w
+// of q are computed once.
 bool corner_to_corner_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p, uint32_t q, const Fan& at_q) {
   const auto& P = mesh.points;
+  auto turn = [&](uint32_t a, uint32_t b) { return orient3d(P[p], P[q], P[a], P[b]); };
+  const size_t m = at_q.neighbours.size();
+  auto index = [](const std::vector<uint32_t>& v, uint32_t x) {
+    return static_cast<size_t>(std::find(v.begin(), v.end(), x) - v.begin());
+  };
   for (const auto& [x, y] : at_p.wedges) {
     // Counter-clockwise around u: det(u, x - p, y - p) = u . n_S > 0 in the open LVM.
-    if (orient3d(P[p], P[q], P[x], P[y]) != Sign::kPositive) return true;
-    for (uint32_t w : at_q.neighbours) {
-      if (strictly_inside(mesh, p, q, x, y, w)) return true;
+    if (turn(x, y) != Sign::kPositive) return true;
+  }
+  std::vector<Sign> sign(at_p.neighbours.size() * m);  // turn(x, w)
+  for (size_t i = 0; i < at_p.neighbours.size(); ++i) {
+    for (size_t j = 0; j < m; ++j) sign[i * m + j] = turn(at_p.neighbours[i], at_q.neighbours[j]);
+  }
+  for (const auto& [x, y] : at_p.wedges) {
+    const size_t ix = index(at_p.neighbours, x), iy = index(at_p.neighbours, y);
+    for (size_t j = 0; j < m; ++j) {
+      if (sign[ix * m + j] == Sign::kPositive && sign[iy * m + j] == Sign::kNegative) return true;
     }
   }
-  for (auto [x, y] : at_q.wedges) {
-    const Sign turn = orient3d(P[p], P[q], P[x], P[y]);  // det(u, x - q, y - q)
-    if (turn == Sign::kZero) continue;
-    if (turn == Sign::kNegative) std::swap(x, y);
-    for (uint32_t s : at_p.neighbours) {
-      if (strictly_inside(mesh, p, q, x, y, s)) return true;
+  for (const auto& [w0, w1] : at_q.wedges) {
+    const Sign t = turn(w0, w1);
+    if (t == Sign::kZero) continue;
+    const size_t j0 = index(at_q.neighbours, t == Sign::kPositive ? w0 : w1);
+    const size_t j1 = index(at_q.neighbours, t == Sign::kPositive ? w1 : w0);
+    for (size_t i = 0; i < at_p.neighbours.size(); ++i) {
+      // s strictly inside (a, b) counter-clockwise: turn(a, s) > 0 and turn(s, b) > 0.
+      if (sign[i * m + j0] == Sign::kNegative && sign[i * m + j1] == Sign::kPositive) return true;
     }
   }
   return false;
-}
-
-// Arcs on one circle (common normal n), merged in order of their starts along it: an arc
-// starting on the current one extends it while the result stays shorter than 180 degrees.
-void merge_on_circle(std::vector<sphere::ArrangementArc>& arcs, std::vector<sphere::ArrangementArc>& out) {
-  const ExactVec& n = arcs.front().normal;
-  // Angles of the starts in a basis of the circle's plane (an order only: exactness is in
-  // the merge tests).
-  const std::array<double, 3> e1 = arcs.front().from.unit(), nu = n.unit();
-  const std::array<double, 3> e2{nu[1] * e1[2] - nu[2] * e1[1], nu[2] * e1[0] - nu[0] * e1[2],
-                                 nu[0] * e1[1] - nu[1] * e1[0]};
-  auto angle = [&](const ExactVec& v) {
-    const std::array<double, 3> u = v.unit();
-    return std::atan2(u[0] * e2[0] + u[1] * e2[1] + u[2] * e2[2], u[0] * e1[0] + u[1] * e1[1] + u[2] * e1[2]);
-  };
-  std::vector<std::pair<double, size_t>> by_start;
-  for (size_t i = 0; i < arcs.size(); ++i) by_start.push_back({angle(arcs[i].from), i});
-  std::sort(by_start.begin(), by_start.end());
-  std::optional<sphere::ArrangementArc> current;
-  for (const auto& [_, i] : by_start) {
-    const sphere::ArrangementArc& next = arcs[i];
-    if (current) {
-      const sphere::Arc held{current->from, current->to, n};
-      if (sphere::arc_contains(held, next.from)) {
-        if (sphere::arc_contains(held, next.to)) continue;
-        if (exact::sign_det(n, current->from, next.to) == Sign::kPositive) {
-          current->to = next.to;
-          continue;
-        }
-      }
-      out.push_back(*current);
-    }
-    current = next;
-  }
-  if (current) out.push_back(*current);
-}
-
-// The arcs on one great circle (normals exactly parallel) merged where they overlap, as
-// long as the merged arc stays shorter than 180 degrees: candidates come in families on
-// one circle (the corners of O along a line parallel to a border edge of S all give the
-// plane through both), which the arrangement would otherwise split against each other.
-// Circles are found by rounded unit normals and confirmed exactly; a family split by the
-// rounding is only merged less.
-std::vector<sphere::ArrangementArc> merged_by_circle(std::vector<sphere::ArrangementArc> arcs) {
-  std::unordered_map<uint64_t, std::vector<std::vector<sphere::ArrangementArc>>> buckets;
-  for (sphere::ArrangementArc& a : arcs) {
-    std::array<double, 3> n = a.normal.unit();
-    // One sign per line through the origin: the first non-zero component positive.
-    const double lead = n[0] != 0 ? n[0] : n[1] != 0 ? n[1] : n[2];
-    if (lead < 0) n = {-n[0], -n[1], -n[2]};
-    uint64_t key = 0;
-    for (double c : n) key = key * 1000003 + static_cast<uint64_t>(std::llround(c * 1e9) + (1LL << 40));
-    auto& circles = buckets[key];
-    auto it = std::find_if(circles.begin(), circles.end(),
-                           [&](const auto& c) { return exact::parallel(c[0].normal, a.normal); });
-    if (it == circles.end()) it = circles.insert(circles.end(), std::vector<sphere::ArrangementArc>{});
-    if (!it->empty() && exact::sign_dot(it->front().normal, a.normal) == Sign::kNegative) {
-      a = {a.to, a.from, it->front().normal, a.layer, a.weight};
-    } else if (!it->empty()) {
-      a.normal = it->front().normal;
-    }
-    it->push_back(std::move(a));
-  }
-  std::vector<std::pair<uint64_t, std::vector<sphere::ArrangementArc>*>> order;
-  for (auto& [key, circles] : buckets) {
-    for (auto& c : circles) order.push_back({key, &c});
-  }
-  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<sphere::ArrangementArc> out;
-  for (auto& [key, circle] : order) merge_on_circle(*circle, out);
-  return out;
 }
 
 }  // namespace
@@ -306,7 +270,11 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
     return window.may_meet(q_max.data(), p_min.data());
   };
   // One slot per element of O, filled in parallel and read in order (deterministic).
-  std::vector<SeamCandidates> at_corner(occ.corners.size()), at_edge(occ.edges.size());
+  struct Found {
+    std::vector<GrazingArc> arcs;
+    std::vector<ExactVec> points;
+  };
+  std::vector<Found> at_corner(occ.corners.size()), at_edge(occ.edges.size());
   tbb::parallel_for(size_t{0}, occ.corners.size(), [&](size_t i) {
     const auto& [q, fan_q] = occ.corners[i];
     std::vector<double> q_max(k), p_min(k);
@@ -315,7 +283,7 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
           edge_to_corner_rules_out(mesh, e, q, fan_q)) {
         continue;
       }
-      add_arc(mesh, e[0], q, e[1], q, open, at_corner[i].arcs);
+      add_arc(mesh, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
     }
     for (const auto& [p, fan_p] : border.corners) {
       if (q == p || !may_meet(p, p, q, q, q_max, p_min) || corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q)) {
@@ -333,20 +301,23 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
           corner_to_edge_rules_out(mesh, p, fan_p, e)) {
         continue;
       }
-      add_arc(mesh, p, e[0], p, e[1], open, at_edge[i].arcs);
+      add_arc(mesh, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
     }
   });
+  std::vector<GrazingArc> grazing;
   SeamCandidates all;
   for (auto* part : {&at_corner, &at_edge}) {
-    for (SeamCandidates& c : *part) {
-      all.arcs.insert(all.arcs.end(), c.arcs.begin(), c.arcs.end());
-      all.points.insert(all.points.end(), c.points.begin(), c.points.end());
+    for (Found& f : *part) {
+      grazing.insert(grazing.end(), f.arcs.begin(), f.arcs.end());
+      all.points.insert(all.points.end(), f.points.begin(), f.points.end());
     }
   }
-  const size_t found = all.arcs.size();
-  all.arcs = merged_by_circle(std::move(all.arcs));
-  spdlog::debug("seam candidates: {} arcs ({} merged on common circles), {} points", found, all.arcs.size(),
-                all.points.size());
+  const size_t found = grazing.size(), corners = all.points.size();
+  SeamPieces pieces = seam_pieces(std::move(grazing));
+  all.arcs = std::move(pieces.arcs);
+  all.points.insert(all.points.end(), pieces.points.begin(), pieces.points.end());
+  spdlog::debug("seam candidates: {} grazing arcs, {} corner contacts: {} arcs and {} points", found, corners,
+                all.arcs.size(), all.points.size());
   return all;
 }
 

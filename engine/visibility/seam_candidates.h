@@ -20,8 +20,10 @@
 //  - from a border corner p to a corner q: u = q - p, unless, seen along u, an edge at q
 //    points strictly into a triangle of S at p or an edge of S at p strictly into a
 //    triangle at q.
-// Those arcs and points that may meet the open LVM hold every seam; the occlusion probe
-// decides them exactly (occlusion_probe.h).
+// Those arcs and points that may meet the open LVM hold every seam. Which parts of the
+// arcs can (seam_pieces.h): where arcs occluding opposite sides of one circle overlap,
+// and where arcs of three circles cross; the occlusion probe decides them and the corner
+// contacts exactly (occlusion_probe.h).
 #pragma once
 
 #include <cstdint>
@@ -36,7 +38,7 @@ namespace gvm {
 
 struct SeamCandidates {
   std::vector<sphere::ArrangementArc> arcs;  // weight 0, layer 0 (set by the caller)
-  std::vector<exact::ExactVec> points;
+  std::vector<exact::ExactVec> points;       // corner contacts and crossings of three arcs
 };
 
 class DirectionWindow;
