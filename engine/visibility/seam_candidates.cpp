@@ -178,7 +178,8 @@ bool edge_to_corner_rules_out(const SolidMesh& mesh, const std::array<uint32_t, 
                              const Fan& at_q) {
   const auto& P = mesh.points;
   const Sign side = orient3d(P[e[0]], P[e[1]], P[q], P[e[2]]);
-  if (side == Sign::kZero) return true;  // u in the plane of S's triangle: not in the open LVM
+  // u . n_S > 0 in the open LVM: q strictly in front of (a, b, r), i.e. r on the negative side.
+  if (side != Sign::kNegative) return true;
   for (uint32_t w : at_q.neighbours) {
     if (orient3d(P[e[0]], P[e[1]], P[q], P[w]) == side) return true;
   }
@@ -190,6 +191,7 @@ bool edge_to_corner_rules_out(const SolidMesh& mesh, const std::array<uint32_t, 
 // strictly to one side of the plane (a, b, p).
 bool corner_to_edge_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p, const std::array<uint32_t, 4>& e) {
   const auto& P = mesh.points;
+
   const Sign c = orient3d(P[e[0]], P[e[1]], P[p], P[e[2]]);
   const Sign d = orient3d(P[e[0]], P[e[1]], P[p], P[e[3]]);
   for (const auto& [x, y] : at_p.wedges) {
@@ -205,38 +207,29 @@ bool corner_to_edge_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p
 
 // From border corner p to corner q: occluding when, seen along u = q - p, an edge at q
 // points strictly into a triangle of S at p, or an edge of S at p into a triangle at q.
-// Every angle test is a sign of det(u, a - p, b - p) = orient3d(p, q, a, b) (the same as
-// with b - q: u is q - p), so the signs between S's neighbours x of p and the neighbours w
-// of q are computed once.
+// Every angle test is a sign of det(u, a - p, b - p) = orient3d(p, q, a, b) (the same
+// with b - q, as u is q - p).
 bool corner_to_corner_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p, uint32_t q, const Fan& at_q) {
   const auto& P = mesh.points;
   auto turn = [&](uint32_t a, uint32_t b) { return orient3d(P[p], P[q], P[a], P[b]); };
-  const size_t m = at_q.neighbours.size();
-  auto index = [](const std::vector<uint32_t>& v, uint32_t x) {
-    return static_cast<size_t>(std::find(v.begin(), v.end(), x) - v.begin());
+  // c strictly inside the wedge from a to b (counter-clockwise around u, less than 180).
+  auto inside = [&](uint32_t a, uint32_t b, uint32_t c) {
+    return turn(a, c) == Sign::kPositive && turn(c, b) == Sign::kPositive;
   };
   for (const auto& [x, y] : at_p.wedges) {
     // Counter-clockwise around u: det(u, x - p, y - p) = u . n_S > 0 in the open LVM.
     if (turn(x, y) != Sign::kPositive) return true;
   }
-  std::vector<Sign> sign(at_p.neighbours.size() * m);  // turn(x, w)
-  for (size_t i = 0; i < at_p.neighbours.size(); ++i) {
-    for (size_t j = 0; j < m; ++j) sign[i * m + j] = turn(at_p.neighbours[i], at_q.neighbours[j]);
-  }
   for (const auto& [x, y] : at_p.wedges) {
-    const size_t ix = index(at_p.neighbours, x), iy = index(at_p.neighbours, y);
-    for (size_t j = 0; j < m; ++j) {
-      if (sign[ix * m + j] == Sign::kPositive && sign[iy * m + j] == Sign::kNegative) return true;
+    for (uint32_t w : at_q.neighbours) {
+      if (inside(x, y, w)) return true;
     }
   }
   for (const auto& [w0, w1] : at_q.wedges) {
     const Sign t = turn(w0, w1);
     if (t == Sign::kZero) continue;
-    const size_t j0 = index(at_q.neighbours, t == Sign::kPositive ? w0 : w1);
-    const size_t j1 = index(at_q.neighbours, t == Sign::kPositive ? w1 : w0);
-    for (size_t i = 0; i < at_p.neighbours.size(); ++i) {
-      // s strictly inside (a, b) counter-clockwise: turn(a, s) > 0 and turn(s, b) > 0.
-      if (sign[i * m + j0] == Sign::kNegative && sign[i * m + j1] == Sign::kPositive) return true;
+    for (uint32_t s : at_p.neighbours) {
+      if (t == Sign::kPositive ? inside(w0, w1, s) : inside(w1, w0, s)) return true;
     }
   }
   return false;
@@ -252,22 +245,27 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   const OpenLvm open(lvm);
   // The window's values at every point used, for the certain misses in double precision.
   const size_t k = window.size();
+  // The window's values m_k . x: the smallest over each border edge and at each border
+  // corner of S, at each corner and the largest over each edge of O, computed once.
   std::unordered_map<uint32_t, std::vector<double>> at;
-  auto add_values = [&](uint32_t v) {
+  auto values = [&](uint32_t v) -> const std::vector<double>& {
     auto [it, added] = at.try_emplace(v, k);
     if (added && k) window.values(mesh.points[v], it->second.data());
+    return it->second;
   };
-  for (const auto& e : border.edges) add_values(e[0]), add_values(e[1]);
-  for (const auto& e : occ.edges) add_values(e[0]), add_values(e[1]);
-  // Whether directions from the points p0 (and p1) of S to q0 (and q1) of O may meet L.
-  auto may_meet = [&](uint32_t p0, uint32_t p1, uint32_t q0, uint32_t q1, std::vector<double>& q_max,
-                      std::vector<double>& p_min) {
-    const auto &a = at.at(p0), &b = at.at(p1), &c = at.at(q0), &d = at.at(q1);
-    for (size_t i = 0; i < k; ++i) {
-      p_min[i] = std::min(a[i], b[i]);
-      q_max[i] = std::max(c[i], d[i]);
-    }
-    return window.may_meet(q_max.data(), p_min.data());
+  auto extreme = [&](uint32_t v0, uint32_t v1, bool largest) {
+    std::vector<double> out = values(v0);
+    const std::vector<double>& other = values(v1);
+    for (size_t i = 0; i < k; ++i) out[i] = largest ? std::max(out[i], other[i]) : std::min(out[i], other[i]);
+    return out;
+  };
+  std::vector<std::vector<double>> s_edge, s_corner, o_corner, o_edge;
+  for (const auto& e : border.edges) s_edge.push_back(extreme(e[0], e[1], false));
+  for (const auto& c : border.corners) s_corner.push_back(values(c.first));
+  for (const auto& c : occ.corners) o_corner.push_back(values(c.first));
+  for (const auto& e : occ.edges) o_edge.push_back(extreme(e[0], e[1], true));
+  auto may_meet = [&](const std::vector<double>& o_max, const std::vector<double>& s_min) {
+    return window.may_meet(o_max.data(), s_min.data());
   };
   // One slot per element of O, filled in parallel and read in order (deterministic).
   struct Found {
@@ -277,16 +275,16 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   std::vector<Found> at_corner(occ.corners.size()), at_edge(occ.edges.size());
   tbb::parallel_for(size_t{0}, occ.corners.size(), [&](size_t i) {
     const auto& [q, fan_q] = occ.corners[i];
-    std::vector<double> q_max(k), p_min(k);
-    for (const auto& e : border.edges) {
-      if (q == e[0] || q == e[1] || !may_meet(e[0], e[1], q, q, q_max, p_min) ||
-          edge_to_corner_rules_out(mesh, e, q, fan_q)) {
+    for (size_t j = 0; j < border.edges.size(); ++j) {
+      const auto& e = border.edges[j];
+      if (q == e[0] || q == e[1] || !may_meet(o_corner[i], s_edge[j]) || edge_to_corner_rules_out(mesh, e, q, fan_q)) {
         continue;
       }
       add_arc(mesh, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
     }
-    for (const auto& [p, fan_p] : border.corners) {
-      if (q == p || !may_meet(p, p, q, q, q_max, p_min) || corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q)) {
+    for (size_t j = 0; j < border.corners.size(); ++j) {
+      const auto& [p, fan_p] = border.corners[j];
+      if (q == p || !may_meet(o_corner[i], s_corner[j]) || corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q)) {
         continue;
       }
       const ExactVec u = direction(mesh, p, q);
@@ -295,10 +293,9 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   });
   tbb::parallel_for(size_t{0}, occ.edges.size(), [&](size_t i) {
     const auto& e = occ.edges[i];
-    std::vector<double> q_max(k), p_min(k);
-    for (const auto& [p, fan_p] : border.corners) {
-      if (p == e[0] || p == e[1] || !may_meet(p, p, e[0], e[1], q_max, p_min) ||
-          corner_to_edge_rules_out(mesh, p, fan_p, e)) {
+    for (size_t j = 0; j < border.corners.size(); ++j) {
+      const auto& [p, fan_p] = border.corners[j];
+      if (p == e[0] || p == e[1] || !may_meet(o_edge[i], s_corner[j]) || corner_to_edge_rules_out(mesh, p, fan_p, e)) {
         continue;
       }
       add_arc(mesh, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
