@@ -143,6 +143,31 @@ TEST(StepRead, AStopRequestEndsTheReading) {
   std::printf("piattello: stopped after 0.1 s, read_step returned after %.2f s\n", seconds);
 }
 
+// A face limit is checked before the mesh is built: on the B-rep faces before meshing, on
+// BRepMesh's triangles before welding, naming the counts and the limit.
+TEST(StepRead, AFaceLimitStopsTheReadingBeforeTheMeshIsBuilt) {
+  StatusOr<StepPart> all = read_step(step_path("bug32745_pmi1.stp"), StepOptions{});
+  ASSERT_TRUE(all.ok()) << all.status().message();
+  const uint32_t faces = static_cast<uint32_t>(all->cad_faces.size());
+  const uint32_t triangles = static_cast<uint32_t>(all->mesh.faces.size());
+  ASSERT_LT(faces, triangles);
+  StepOptions options;
+  options.max_triangles = faces - 1;
+  StatusOr<StepPart> few = read_step(step_path("bug32745_pmi1.stp"), options);
+  ASSERT_FALSE(few.ok());
+  EXPECT_EQ(few.status().code(), StatusCode::kResourceExhausted);
+  EXPECT_NE(few.status().message().find(std::to_string(faces) + " B-rep faces"), std::string::npos)
+      << few.status().message();
+  options.max_triangles = triangles - 1;
+  StatusOr<StepPart> meshed = read_step(step_path("bug32745_pmi1.stp"), options);
+  ASSERT_FALSE(meshed.ok());
+  EXPECT_EQ(meshed.status().code(), StatusCode::kResourceExhausted);
+  EXPECT_NE(meshed.status().message().find("limit of " + std::to_string(triangles - 1)), std::string::npos)
+      << meshed.status().message();
+  options.max_triangles = triangles;
+  EXPECT_TRUE(read_step(step_path("bug32745_pmi1.stp"), options).ok());
+}
+
 Analysis analyzed(AnalyzeRequest request) {
   auto a = analyze(request);
   EXPECT_TRUE(a.ok()) << a.status().message();

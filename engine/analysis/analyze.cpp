@@ -124,6 +124,7 @@ StepOptions step_options(const v1::StepOptions& o) {
 StatusOr<RawMesh> read_step_part(const AnalyzeRequest& request, std::optional<StepPart>& step) {
   StepOptions options = step_options(request.options.step());
   options.stop = request.stop;
+  options.max_triangles = request.max_faces;  // checked before the mesh is built
   StatusOr<StepPart> read =
       request.part_bytes ? read_step(*request.part_bytes, options, part_name(request)) : read_step(request.part_path, options);
   if (!read.ok()) return read.status();

@@ -60,8 +60,9 @@ std::vector<CadHole> find_holes(const TopoDS_Shape& solid, const TopTools_Indexe
 std::string face_label(const TopoDS_Face& face, uint32_t index);
 
 // Tessellates `solid` and welds the triangulation by topology into part.mesh and
-// part.face_cad; part.cad_faces must already be filled (step_tessellation.cpp).
-Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians,
+// part.face_cad; part.cad_faces must already be filled (step_tessellation.cpp). More than
+// max_triangles triangles (0: no limit) fail with kResourceExhausted before welding.
+Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians, uint32_t max_triangles,
                   const std::stop_token& stop, StepPart& part);
 
 // The points of the welded mesh, keyed by topology: one per B-rep vertex, one per interior

@@ -142,6 +142,11 @@ StatusOr<StepPart> read_checked(std::string_view bytes, const StepOptions& optio
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(*solid, TopAbs_FACE, faces);
   if (options.stop.stop_requested()) return cancelled(source);
+  if (options.max_triangles > 0 && uint64_t(faces.Extent()) > options.max_triangles) {
+    return ResourceExhausted(source + ": " + std::to_string(faces.Extent()) +
+                             " B-rep faces (a triangle each at least), more than the limit of " +
+                             std::to_string(options.max_triangles) + " faces");
+  }
   part.cad_faces = describe_faces(faces);
   if (options.group_holes) part.holes = find_holes(*solid, faces, part.cad_faces);
   part.linear_deflection = options.linear_deflection > 0 ? options.linear_deflection
@@ -150,7 +155,10 @@ StatusOr<StepPart> read_checked(std::string_view bytes, const StepOptions& optio
     return InvalidArgument(source + ": the solid has an empty bounding box");
   part.angular_deflection_degrees = options.angular_deflection_degrees;
   const double angular = options.angular_deflection_degrees * std::numbers::pi / 180;
-  if (Status s = tessellate(*solid, part.linear_deflection, angular, options.stop, part); !s.ok()) return s;
+  if (Status s = tessellate(*solid, part.linear_deflection, angular, options.max_triangles, options.stop, part);
+      !s.ok()) {
+    return s;
+  }
   return part;
 }
 

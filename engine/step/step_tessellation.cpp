@@ -168,7 +168,7 @@ std::string mesher_status(int flags) {
 
 }  // namespace
 
-Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians,
+Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians, uint32_t max_triangles,
                   const std::stop_token& stop, StepPart& part) {
   // A file may carry its own triangulation; ours must come from one BRepMesh run.
   BRepTools::Clean(solid);
@@ -190,6 +190,19 @@ Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radia
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(solid, TopAbs_FACE, faces);
 
+  if (max_triangles > 0) {
+    uint64_t triangles = 0;
+    for (int i = 1; i <= faces.Extent(); ++i) {
+      TopLoc_Location loc;
+      const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(TopoDS::Face(faces(i)), loc);
+      triangles += tri.IsNull() ? 1 : uint64_t(std::max(tri->NbTriangles(), 1));
+    }
+    if (triangles > max_triangles) {
+      return ResourceExhausted(part.mesh.source + ": the tessellation has " + std::to_string(triangles) +
+                               " triangles, more than the limit of " + std::to_string(max_triangles) +
+                               " faces (a larger linear or angular deflection gives fewer)");
+    }
+  }
   std::vector<std::vector<std::vector<uint32_t>>> per_face(size_t(faces.Extent()));
   std::vector<uint32_t> untriangulated;
   for (int i = 1; i <= faces.Extent(); ++i) {

@@ -64,6 +64,10 @@ struct StepOptions {
   double angular_deflection_degrees = 10;
   int solid = -1;  // -1: the file must hold exactly one solid; else the 0-based solid to take
   bool group_holes = false;  // find StepPart::holes
+  // 0: no limit; else more triangles fail with kResourceExhausted before the mesh is built:
+  // more B-rep faces than that (each gives a triangle at least) before meshing, more
+  // triangles from BRepMesh before they are welded.
+  uint32_t max_triangles = 0;
   // A stop request ends the reading (kCancelled) at the next check: between parsing,
   // translation, checking and meshing, and inside translation and meshing.
   std::stop_token stop;
