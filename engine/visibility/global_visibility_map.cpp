@@ -106,18 +106,16 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
                 eme.statistics.border_edges);
   if (stats) stats->envelope = eme.statistics;
   SumVertices sum(mesh);
-  std::vector<std::vector<ExactVec>> faces;
-  std::vector<OpenCells::Cell> open;
+  std::vector<std::vector<ExactVec>> faces, normals;
   Interruptions interruptions;
   for (const EnvelopeFace& f : eme.faces) {
     interruptions.tick();
-    OpenCells::Cell cell;
-    for (auto [q, p] : f.vertices) cell.vertices.push_back(sum.at(q, p));
-    const std::vector<ExactVec>& v = cell.vertices;
-    for (size_t i = 0; i < v.size(); ++i) cell.normals.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
-    circles.insert(circles.end(), cell.normals.begin(), cell.normals.end());
-    faces.push_back(v);
-    open.push_back(std::move(cell));
+    std::vector<ExactVec> v, n;
+    for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
+    for (size_t i = 0; i < v.size(); ++i) n.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
+    circles.insert(circles.end(), n.begin(), n.end());
+    faces.push_back(std::move(v));
+    normals.push_back(std::move(n));
   }
   if (clip) circles.insert(circles.end(), clip->normals().begin(), clip->normals().end());
   const std::vector<uint32_t> kept = faces_that_matter(faces, clip);
@@ -148,7 +146,10 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     }
     return coverage;
   };
-  return {occluded_directions(cells, r), r, OpenCells(std::move(open))};
+  sphere::Region region = occluded_directions(cells, r);
+  std::vector<OpenCells::Cell> open(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) open[i] = {std::move(faces[i]), std::move(normals[i])};
+  return {std::move(region), r, OpenCells(std::move(open))};
 }
 
 // The same closure by convex decomposition: the pairwise occlusion maps are the cells.
