@@ -67,6 +67,7 @@ class OcclusionProbe {
   // arc (strip_events.h), in order along it, without repeats.
   struct Strips {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    std::vector<exact::UnitEstimate> plane_normals;  // of each pair's triangle of S
     std::vector<exact::ExactVec> events;
     // Whether some pair blocks u; `last` is the pair that blocked last (tried first, updated).
     bool block(const OcclusionProbe& probe, const exact::ExactVec& u, size_t& last) const;
