@@ -7,7 +7,7 @@
 //
 // Without parts: every part of $GVM_SHARED_DIR/data/parts (default ../shared). For each
 // part, the K (default 3) features with the largest |S| * |O_S| (or every feature, or the
-// features named, e.g. F17), each
+// features named, e.g. F17, or given by id, e.g. '#17' for the JSON's feature 17), each
 // computed by both methods: #S, #O_S, #GOM, #Arrng, #GVM, seconds and peak memory, and
 // whether the two GVMs are equal. Convex decomposition is skipped on features with more
 // than N pairs (default: no limit). Prints a table; --csv and --json write the same rows
@@ -27,6 +27,7 @@
 #include <thread>
 #include <vector>
 
+#include "gvm/analysis.h"
 #include "gvm/mesh.h"
 #include "gvm/part.h"
 #include "gvm/v1/benchmark.pb.h"
@@ -123,12 +124,17 @@ void print_header() {
 // Returns false when a part cannot be read.
 bool compare(const Options& opt, gvm::v1::Comparison& out) {
   for (const std::string& path : opt.parts) {
-    auto solid = gvm::load_solid(path);
+    // As `gvm analyze` reads it: STEP parts too, their B-rep faces (or OBJ groups) the features.
+    gvm::AnalyzeRequest request;
+    request.part_path = path;
+    auto solid = gvm::load_part_solid(request);
     if (!solid.ok()) {
       std::fprintf(stderr, "%s: %s\n", path.c_str(), solid.status().message().c_str());
       return false;
     }
-    auto part = gvm::Part::analyze(std::move(*solid), gvm::PartOptions{});
+    gvm::PartOptions part_options;
+    part_options.face_groups = solid->groups;
+    auto part = gvm::Part::analyze(std::move(*solid), part_options);
     if (!part.ok()) {
       std::fprintf(stderr, "%s: %s\n", path.c_str(), part.status().message().c_str());
       return false;
@@ -147,7 +153,10 @@ bool compare(const Options& opt, gvm::v1::Comparison& out) {
     });
     if (!opt.features.empty()) {
       std::erase_if(candidates, [&](const Candidate& c) {
-        return std::find(opt.features.begin(), opt.features.end(), c.feature->name) == opt.features.end();
+        const std::string id = "#" + std::to_string(c.feature->id);
+        return std::find_if(opt.features.begin(), opt.features.end(), [&](const std::string& f) {
+                 return f == c.feature->name || f == id;
+               }) == opt.features.end();
       });
     } else if (!opt.all_features && candidates.size() > opt.largest) {
       candidates.resize(opt.largest);

@@ -251,6 +251,10 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
                             impl->part, triangles[i], !request.options.lvm_only(), method);
                         surfaces[i].maps =
                             surface_maps(impl->part.mesh(), std::move(vis), seconds_since(ts));
+                        const SurfaceStatistics& st = surfaces[i].maps.statistics;
+                        log.debug("{} {}: |S| {} |O_S| {}, maps in {:.2f} s",
+                                  surfaces[i].kind == Surface::Kind::kRegion ? "region" : "feature",
+                                  surfaces[i].id, triangles[i].size(), st.potential_occluders, st.seconds);
                         progress.tick();
                       }
                     });
