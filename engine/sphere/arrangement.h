@@ -95,6 +95,10 @@ class Arrangement {
   }
   bool vertex_has_point(uint32_t v, int k) const;
 
+  // Pairs of arcs, and of vertices, whose boxes overlapped and which were then compared
+  // exactly (over the builds, bridges included): a measure of the work.
+  uint64_t compared_pairs() const { return compared_pairs_; }
+
   // The vertex at the reference direction, and the face around it.
   uint32_t reference_vertex() const { return reference_vertex_; }
   uint32_t reference_face() const;
@@ -136,6 +140,7 @@ class Arrangement {
   std::vector<Edge> edges_;
   std::vector<FaceInfo> faces_;
   uint32_t reference_vertex_ = 0;
+  uint64_t compared_pairs_ = 0;
   // Compressed rows: the layers on edge e are edge_layer_[edge_layer_begin_[e] ..
   // edge_layer_begin_[e + 1]), the point layers of vertex v likewise.
   std::vector<uint32_t> edge_layer_begin_;

@@ -18,6 +18,14 @@ Box merge(const Box& a, const Box& b) {
   return m;
 }
 
+// lo rounded down and hi rounded up: a box computed in doubles still holds the exact one.
+void round_outwards(Box& b) {
+  for (int i = 0; i < 3; ++i) {
+    b.lo[i] = std::nextafter(b.lo[i], -HUGE_VAL);
+    b.hi[i] = std::nextafter(b.hi[i], HUGE_VAL);
+  }
+}
+
 }  // namespace
 
 Box point_box(const exact::UnitEstimate& e) {
@@ -26,21 +34,46 @@ Box point_box(const exact::UnitEstimate& e) {
     b.lo[i] = e.unit[i] - e.radius;
     b.hi[i] = e.unit[i] + e.radius;
   }
+  round_outwards(b);
   return b;
 }
 
-Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
-  double chord = 0;
-  for (int i = 0; i < 3; ++i) chord += (a.unit[i] - b.unit[i]) * (a.unit[i] - b.unit[i]);
-  chord = std::min(2.0, std::sqrt(chord));
-  double half_angle = std::asin(chord / 2);
-  double grow = (1 - std::cos(half_angle)) * 1.01 + a.radius + b.radius + 1e-12;
+Box exact_point_box(const exact::ExactVec& a) {
+  const std::array<double, 3> u = a.unit();
+  Box b;
+  for (int i = 0; i < 3; ++i) {
+    const double off = std::fabs(u[i]) * 0x1p-49 + 0x1p-1000;  // twice unit()'s bound
+    b.lo[i] = u[i] - off;
+    b.hi[i] = u[i] + off;
+  }
+  round_outwards(b);
+  return b;
+}
+
+Box arc_box(const Box& a, const Box& b) {
+  // The exact chord is at most c (the far corners of the two boxes), and the minor arc
+  // leaves the box of its chord by at most its sagitta 1 - sqrt(1 - c^2/4), computed as
+  // x / (1 + sqrt(1 - x)), x = c^2/4: without cancellation, so that arcs 1e-16 long keep
+  // boxes that small.
+  double chord2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double d = std::max(a.hi[i] - b.lo[i], b.hi[i] - a.lo[i]);
+    chord2 += d * d;
+  }
+  const double c = std::min(2.0, std::sqrt(chord2) * (1 + 0x1p-50));
+  const double x = c * c / 4;
+  const double sagitta = x / (1 + std::sqrt(1 - x)) * (1 + 0x1p-48);
   Box box;
   for (int i = 0; i < 3; ++i) {
-    box.lo[i] = std::min(a.unit[i], b.unit[i]) - grow;
-    box.hi[i] = std::max(a.unit[i], b.unit[i]) + grow;
+    box.lo[i] = std::min(a.lo[i], b.lo[i]) - sagitta;
+    box.hi[i] = std::max(a.hi[i], b.hi[i]) + sagitta;
   }
+  round_outwards(box);
   return box;
+}
+
+Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b) {
+  return arc_box(point_box(a), point_box(b));
 }
 
 BoxTree::BoxTree(std::span<const Box> boxes) : boxes_(boxes.begin(), boxes.end()) {
@@ -75,7 +108,8 @@ uint32_t BoxTree::build(uint32_t begin, uint32_t end) {
   return id;
 }
 
-void BoxTree::pairs_within(uint32_t n, std::vector<std::pair<uint32_t, uint32_t>>& out) const {
+void BoxTree::pairs_within(uint32_t n, Pairs& out, size_t limit) const {
+  if (out.size() > limit) return;
   const Node& node = nodes_[n];
   if (node.left == 0) {
     for (uint32_t a = node.begin; a < node.end; ++a) {
@@ -87,15 +121,14 @@ void BoxTree::pairs_within(uint32_t n, std::vector<std::pair<uint32_t, uint32_t>
     }
     return;
   }
-  pairs_within(node.left, out);
-  pairs_within(node.right, out);
-  pairs_between(node.left, node.right, out);
+  pairs_within(node.left, out, limit);
+  pairs_within(node.right, out, limit);
+  pairs_between(node.left, node.right, out, limit);
 }
 
-void BoxTree::pairs_between(uint32_t a, uint32_t b,
-                            std::vector<std::pair<uint32_t, uint32_t>>& out) const {
+void BoxTree::pairs_between(uint32_t a, uint32_t b, Pairs& out, size_t limit) const {
   const Node &na = nodes_[a], &nb = nodes_[b];
-  if (!overlap(na.box, nb.box)) return;
+  if (out.size() > limit || !overlap(na.box, nb.box)) return;
   const bool a_leaf = na.left == 0, b_leaf = nb.left == 0;
   if (a_leaf && b_leaf) {
     for (uint32_t i = na.begin; i < na.end; ++i) {
@@ -109,17 +142,18 @@ void BoxTree::pairs_between(uint32_t a, uint32_t b,
   }
   // Descend into the larger of the two.
   if (b_leaf || (!a_leaf && na.end - na.begin >= nb.end - nb.begin)) {
-    pairs_between(na.left, b, out);
-    pairs_between(na.right, b, out);
+    pairs_between(na.left, b, out, limit);
+    pairs_between(na.right, b, out, limit);
   } else {
-    pairs_between(a, nb.left, out);
-    pairs_between(a, nb.right, out);
+    pairs_between(a, nb.left, out, limit);
+    pairs_between(a, nb.right, out, limit);
   }
 }
 
-std::vector<std::pair<uint32_t, uint32_t>> BoxTree::overlapping_pairs() const {
-  std::vector<std::pair<uint32_t, uint32_t>> out;
-  if (!nodes_.empty()) pairs_within(0, out);
+std::vector<std::pair<uint32_t, uint32_t>> BoxTree::overlapping_pairs(size_t limit) const {
+  Pairs out;
+  if (!nodes_.empty()) pairs_within(0, out, limit);
+  if (out.size() > limit) return out;
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -20,16 +20,22 @@ struct Box {
 
 // A box around a direction given by its certified unit estimate.
 Box point_box(const exact::UnitEstimate& e);
-// A box around the whole minor arc between two directions: the chord's box grown by the
-// arc's sagitta.
+// A box around a direction from its exact value (ExactVec::unit): each coordinate bounded
+// relative to its own size, so that directions 1e-20 apart near an axis get boxes apart
+// (one exact evaluation: for clusters the estimates cannot tell apart).
+Box exact_point_box(const exact::ExactVec& a);
+// A box around the whole minor arc between two directions, from boxes around its ends:
+// theirs grown by the arc's sagitta.
+Box arc_box(const Box& a, const Box& b);
 Box arc_box(const exact::UnitEstimate& a, const exact::UnitEstimate& b);
 
 class BoxTree {
  public:
   explicit BoxTree(std::span<const Box> boxes);
 
-  // Every pair (i, j), i < j, of overlapping boxes, sorted.
-  std::vector<std::pair<uint32_t, uint32_t>> overlapping_pairs() const;
+  // Every pair (i, j), i < j, of overlapping boxes, sorted; or, when there are more than
+  // `limit`, some more than `limit` of them, unsorted.
+  std::vector<std::pair<uint32_t, uint32_t>> overlapping_pairs(size_t limit = SIZE_MAX) const;
   // Indices of the boxes that overlap `query`, sorted.
   std::vector<uint32_t> overlapping(const Box& query) const;
 
@@ -40,8 +46,9 @@ class BoxTree {
     uint32_t left, right;      // children, 0 for a leaf (the root is never a child)
   };
   uint32_t build(uint32_t begin, uint32_t end);
-  void pairs_within(uint32_t n, std::vector<std::pair<uint32_t, uint32_t>>& out) const;
-  void pairs_between(uint32_t a, uint32_t b, std::vector<std::pair<uint32_t, uint32_t>>& out) const;
+  using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
+  void pairs_within(uint32_t n, Pairs& out, size_t limit) const;
+  void pairs_between(uint32_t a, uint32_t b, Pairs& out, size_t limit) const;
 
   std::vector<Box> boxes_;
   std::vector<uint32_t> order_;
