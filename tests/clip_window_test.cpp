@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <optional>
 #include <random>
 #include <vector>
 
+#include "sphere/clearance.h"
 #include "sphere/region_union.h"
 #include "support/spherical_polygons.h"
 
@@ -68,6 +70,82 @@ TEST(ClipWindow, SurroundsArcsPointsAndSmallCellsButNoHemisphere) {
   SphericalImage half;
   half.add_curve({v(1, 0, 0), v(-1, 0, 0), v(0, 0, 1)});
   EXPECT_FALSE(ClipWindow::around(half));
+}
+
+// A convex 2-cell from its arcs (each with the cell on its left).
+SphericalImage convex_cell(const std::vector<Arc>& arcs) {
+  Face f;
+  f.convex = true;
+  f.loops.push_back({arcs});
+  SphericalImage image;
+  image.add_face(f);
+  return image;
+}
+
+// Every direction of the LVM, those on its boundary too, lies strictly inside a window;
+// directions far from it lie in none.
+void expect_covered(const SphericalImage& lvm, const std::vector<ClipWindow>& windows, uint64_t seed) {
+  auto in_a_window = [&](const ExactVec& u) {
+    return std::any_of(windows.begin(), windows.end(), [&](const ClipWindow& w) { return w.contains_strictly(u); });
+  };
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  int inside = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const ExactVec u = v(unit_d({g(rng), g(rng), g(rng)}));
+    if (lvm.contains(u)) {
+      ASSERT_TRUE(in_a_window(u)) << lvm.description();
+      ++inside;
+    } else if (approx_signed_clearance(lvm, u.unit()) < -0.3) {
+      EXPECT_FALSE(in_a_window(u)) << lvm.description();
+    }
+  }
+  EXPECT_GT(inside, 400);
+  // Directions exactly on the boundary circles.
+  for (const Face& f : lvm.faces()) {
+    for (const Arc& arc : f.loops[0].arcs) {
+      for (int k = 0; k < 40; ++k) {
+        const ExactVec on_circle = exact::cross(arc.normal, v(unit_d({g(rng), g(rng), g(rng)})));
+        for (const ExactVec& x : {on_circle, -on_circle}) {
+          if (lvm.contains(x)) EXPECT_TRUE(in_a_window(x)) << lvm.description();
+        }
+      }
+    }
+  }
+}
+
+TEST(ClipWindow, FanPiecesCoverHemispheresLunesAndLargeCells) {
+  const SphericalImage hemisphere = SphericalImage::hemisphere(v(0.3, -0.2, 1));
+  const std::vector<ClipWindow> four = ClipWindow::covering(hemisphere);
+  EXPECT_EQ(four.size(), 4u);
+  expect_covered(hemisphere, four, 1);
+
+  // The lune {z >= 0, x >= 0}: two half circles between -y and +y.
+  const SphericalImage lune = convex_cell({{v(0, -1, 0), v(0, 1, 0), v(0, 0, 1)}, {v(0, 1, 0), v(0, -1, 0), v(1, 0, 0)}});
+  const std::vector<ClipWindow> lune_windows = ClipWindow::covering(lune);
+  EXPECT_GE(lune_windows.size(), 2u);
+  expect_covered(lune, lune_windows, 2);
+
+  // A cell with four corners close together and one opposite: more than a right angle
+  // from the centre of its corners, too wide for one window.
+  std::vector<ExactVec> corners;
+  for (const double degrees : {-3, 0, 3, 6, 180}) {
+    corners.push_back(v(std::cos(degrees * kPi / 180), std::sin(degrees * kPi / 180), 0.1));
+  }
+  std::vector<Arc> sides;
+  for (size_t k = 0; k < corners.size(); ++k) {
+    const ExactVec &a = corners[k], &b = corners[(k + 1) % corners.size()];
+    sides.push_back({a, b, exact::cross(a, b)});
+  }
+  const SphericalImage wide = convex_cell(sides);
+  EXPECT_FALSE(ClipWindow::around(wide));
+  const std::vector<ClipWindow> pieces = ClipWindow::covering(wide);
+  EXPECT_GE(pieces.size(), 3u);
+  expect_covered(wide, pieces, 3);
+
+  // A small cell keeps its single window; the full sphere and two cells get none.
+  EXPECT_EQ(ClipWindow::covering(cell_image(square(-1, -1, 1, 2))).size(), 1u);
+  EXPECT_TRUE(ClipWindow::covering(SphericalImage::full_sphere()).empty());
 }
 
 // Directions in and around a window: along its LVM, a little off it on either side.

@@ -1,6 +1,7 @@
 #include "sphere/box_tree.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numeric>
 
@@ -24,6 +25,30 @@ void round_outwards(Box& b) {
     b.lo[i] = std::nextafter(b.lo[i], -HUGE_VAL);
     b.hi[i] = std::nextafter(b.hi[i], HUGE_VAL);
   }
+}
+
+// Pairs sorted as std::sort sorts them, by radix on their packed keys: sorting took a
+// twelfth of a whole part's analysis (prusa_y-rod-holder, one thread).
+void sort_pairs(std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+  if (pairs.size() < 4096) {
+    std::sort(pairs.begin(), pairs.end());
+    return;
+  }
+  uint32_t largest = 0;
+  for (const auto& [a, b] : pairs) largest = std::max(largest, b);  // a < b
+  const int bits = std::bit_width(largest);
+  std::vector<uint64_t> keys(pairs.size()), scratch(pairs.size());
+  for (size_t i = 0; i < pairs.size(); ++i) keys[i] = uint64_t(pairs[i].first) << bits | pairs[i].second;
+  constexpr int kDigit = 11;
+  for (int shift = 0; shift < 2 * bits; shift += kDigit) {
+    std::vector<size_t> start((size_t{1} << kDigit) + 1, 0);
+    for (uint64_t k : keys) ++start[((k >> shift) & ((1u << kDigit) - 1)) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (uint64_t k : keys) scratch[start[(k >> shift) & ((1u << kDigit) - 1)]++] = k;
+    keys.swap(scratch);
+  }
+  const uint64_t low = (uint64_t{1} << bits) - 1;
+  for (size_t i = 0; i < pairs.size(); ++i) pairs[i] = {uint32_t(keys[i] >> bits), uint32_t(keys[i] & low)};
 }
 
 }  // namespace
@@ -154,7 +179,7 @@ std::vector<std::pair<uint32_t, uint32_t>> BoxTree::overlapping_pairs(size_t lim
   Pairs out;
   if (!nodes_.empty()) pairs_within(0, out, limit);
   if (out.size() > limit) return out;
-  std::sort(out.begin(), out.end());
+  sort_pairs(out);
   return out;
 }
 

@@ -61,6 +61,104 @@ Outline outline(const sphere::SphericalImage& lvm) {
   return out;
 }
 
+// L's boundary counter-clockwise with every arc minor: arcs of a half circle or more
+// (a lune's sides, a hemisphere's full circle) get vertices a quarter turn apart, exactly
+// on their circles. Arc i runs from vertices[i] to vertices[i + 1] about normals[i].
+struct MinorBoundary {
+  std::vector<ExactVec> vertices, normals;
+};
+
+std::optional<MinorBoundary> minor_boundary(const sphere::Loop& loop) {
+  MinorBoundary b;
+  for (const sphere::Arc& arc : loop.arcs) {
+    const ExactVec& m = arc.normal;
+    const D3 n = m.unit();
+    const D3 axis = std::fabs(n[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
+    ExactVec at = arc.full ? exact::cross(m, exact_of(axis)) : arc.start;
+    const ExactVec end = arc.full ? at : arc.end;
+    for (int quarter = 0;; ++quarter) {
+      b.vertices.push_back(at);
+      b.normals.push_back(m);
+      const bool rest_minor = !(arc.full && quarter == 0) && exact::sign_det(at, end, m) == Sign::kPositive;
+      if (rest_minor) break;
+      if (quarter == 3) return std::nullopt;
+      at = exact::cross(m, at);  // a quarter turn on to the arc's end
+    }
+  }
+  return b;
+}
+
+// Directions strictly inside L (inside every arc's half-space), guessed in doubles and
+// checked exactly: the centre of the vertices, of the normals, of the farthest two
+// vertices (for cells whose vertices crowd at one end).
+std::vector<ExactVec> inside_directions(const MinorBoundary& b) {
+  D3 vertex_sum{}, normal_sum{}, far_pair{};
+  double closest = 2;
+  for (size_t i = 0; i < b.vertices.size(); ++i) {
+    const D3 u = b.vertices[i].unit();
+    vertex_sum = add(vertex_sum, u);
+    normal_sum = add(normal_sum, b.normals[i].unit());
+    for (size_t j = 0; j < i; ++j) {
+      const D3 w = b.vertices[j].unit();
+      if (dot(u, w) < closest) {
+        closest = dot(u, w);
+        far_pair = add(u, w);
+      }
+    }
+  }
+  std::vector<ExactVec> out;
+  for (const D3& guess : {vertex_sum, normal_sum, add(vertex_sum, normal_sum), far_pair}) {
+    if (!(norm(guess) > 1e-3)) continue;
+    const ExactVec c = exact_of(normalized(guess));
+    bool inside = true;
+    for (const ExactVec& n : b.normals) inside = inside && exact::sign_dot(n, c) == Sign::kPositive;
+    if (inside) out.push_back(c);
+  }
+  return out;
+}
+
+// A piece of L's fan from c: c and consecutive boundary vertices, counter-clockwise, with
+// the inward unit normals of its sides and its centre, in doubles.
+struct FanPiece {
+  std::vector<ExactVec> vertices;
+  std::vector<D3> inward;
+  D3 centre{};
+};
+
+// Pieces turning about a right angle each around c (more where one arc turns more): every
+// direction of L lies in one, since L is convex and c inside it.
+std::vector<FanPiece> fan_pieces(const MinorBoundary& b, const ExactVec& c) {
+  constexpr double kPieceTurn = 1.75;  // radians, a little over a right angle
+  const D3 cd = c.unit();
+  const D3 helper = std::fabs(cd[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
+  const D3 e1 = normalized(cross(helper, cd)), e2 = cross(cd, e1);
+  const size_t k = b.vertices.size();
+  auto turn = [&](size_t from, size_t to) {  // counter-clockwise around c, in [0, 2 pi)
+    const D3 p = b.vertices[from % k].unit(), q = b.vertices[to % k].unit();
+    const double t = std::atan2(dot(q, e2), dot(q, e1)) - std::atan2(dot(p, e2), dot(p, e1));
+    return t < 0 ? t + 2 * M_PI : t;
+  };
+  std::vector<size_t> cuts = {0};
+  for (size_t i = 2; i <= k; ++i) {
+    if (i - 1 > cuts.back() && turn(cuts.back(), i) > kPieceTurn) cuts.push_back(i - 1);
+  }
+  cuts.push_back(k);
+  std::vector<FanPiece> pieces;
+  for (size_t j = 0; j + 1 < cuts.size(); ++j) {
+    FanPiece piece;
+    piece.vertices.push_back(c);
+    for (size_t i = cuts[j]; i <= cuts[j + 1]; ++i) piece.vertices.push_back(b.vertices[i % k]);
+    piece.inward.push_back(normalized(cross(cd, b.vertices[cuts[j]].unit())));
+    for (size_t i = cuts[j]; i < cuts[j + 1]; ++i) piece.inward.push_back(b.normals[i].unit());
+    piece.inward.push_back(normalized(cross(b.vertices[cuts[j + 1] % k].unit(), cd)));
+    D3 sum{};
+    for (const ExactVec& v : piece.vertices) sum = add(sum, v.unit());
+    piece.centre = normalized(sum);
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
 }  // namespace
 
 ClipWindow::ClipWindow(std::vector<ExactVec> normals) : normals_(std::move(normals)) {
@@ -82,23 +180,50 @@ bool ClipWindow::proper() const {
   return true;
 }
 
+std::optional<ClipWindow> ClipWindow::fit(const std::vector<D3>& inward, const D3& centre,
+                                          std::span<const ExactVec> vertices) {
+  // About one and six degrees; the smaller margin keeps W (and the work) smaller, the
+  // larger one is for cells whose vertices lie near the edge of their centre's hemisphere.
+  for (const double margin : {0.02, 0.1}) {
+    std::vector<ExactVec> normals;
+    for (const D3& m : inward) normals.push_back(exact_of(add(m, centre, margin)));
+    ClipWindow window(std::move(normals));
+    bool inside = window.proper();
+    for (const ExactVec& v : vertices) inside = inside && window.contains_strictly(v);
+    if (inside) return window;
+  }
+  return std::nullopt;
+}
+
 std::optional<ClipWindow> ClipWindow::around(const sphere::SphericalImage& lvm) {
   const Outline l = outline(lvm);
   if (l.inward.empty()) return std::nullopt;
   for (const sphere::Arc& arc : l.arcs) {
     if (exact::sign_det(arc.start, arc.end, arc.normal) != Sign::kPositive) return std::nullopt;
   }
-  // About one and six degrees; the smaller margin keeps W (and the work) smaller, the
-  // larger one is for cells whose vertices lie near the edge of their centre's hemisphere.
-  for (const double margin : {0.02, 0.1}) {
-    std::vector<ExactVec> normals;
-    for (const D3& m : l.inward) normals.push_back(exact_of(add(m, l.centre, margin)));
-    ClipWindow window(std::move(normals));
-    bool inside = window.proper();
-    for (const ExactVec& v : l.vertices) inside = inside && window.contains_strictly(v);
-    if (inside) return window;
+  return fit(l.inward, l.centre, l.vertices);
+}
+
+std::vector<ClipWindow> ClipWindow::covering(const sphere::SphericalImage& lvm) {
+  if (std::optional<ClipWindow> one = around(lvm)) return {std::move(*one)};
+  const size_t cells = lvm.faces().size() + lvm.curves().size() + lvm.points().size();
+  if (lvm.is_full_sphere() || cells != 1 || lvm.faces().empty()) return {};
+  const sphere::Face& f = lvm.faces()[0];
+  if (!f.convex || f.loops.size() != 1) return {};
+  const std::optional<MinorBoundary> boundary = minor_boundary(f.loops[0]);
+  if (!boundary) return {};
+  for (const ExactVec& c : inside_directions(*boundary)) {
+    const std::vector<FanPiece> pieces = fan_pieces(*boundary, c);
+    if (pieces.size() > kMaxWindows) continue;
+    std::vector<ClipWindow> windows;
+    for (const FanPiece& piece : pieces) {
+      std::optional<ClipWindow> w = fit(piece.inward, piece.centre, piece.vertices);
+      if (!w) break;
+      windows.push_back(std::move(*w));
+    }
+    if (windows.size() == pieces.size()) return windows;
   }
-  return std::nullopt;
+  return {};
 }
 
 bool ClipWindow::contains_strictly(const ExactVec& u) const {

@@ -13,8 +13,15 @@
 // corners are proper, every vertex of L lies strictly inside it and every arc of L is
 // minor. A group whose arcs meet W degenerately (an endpoint on W's boundary, a crossing
 // at a corner) is simply left unclipped.
+//
+// An LVM that no such W holds (a hemisphere, a lune, a polygon reaching near the edge of
+// its centre's hemisphere) is cut like a fan from a direction inside it into pieces of
+// about a right angle each, with a window around each piece: a direction of L lies
+// strictly inside the window of its piece, and the argument above holds there. Clipped to
+// the pieces' windows, the cells no longer build the occluded directions behind the face.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -30,6 +37,11 @@ class ClipWindow {
   // The window around `lvm` when there is one: a single 2-cell, arc or point inside an
   // open hemisphere. None for a hemisphere, a lune, several cells, or the full sphere.
   static std::optional<ClipWindow> around(const sphere::SphericalImage& lvm);
+  // Windows whose interiors together hold the LVM: the one `around` it, else one around
+  // each fan piece of a single convex 2-cell. Empty when there are none (several cells, a
+  // half or full circle, the full sphere).
+  static std::vector<ClipWindow> covering(const sphere::SphericalImage& lvm);
+  static constexpr size_t kMaxWindows = 64;  // at most 2 pi / 1.75 * 2 + 1 pieces are cut
 
   // W = {x : w . x >= 0 for every normal w}; the normals in counter-clockwise order of
   // W's edges, corner i (where edge i starts) on the circles of normals i - 1 and i.
@@ -49,6 +61,11 @@ class ClipWindow {
 
  private:
   ClipWindow(std::vector<exact::ExactVec> normals);
+  // The window of the polygon `vertices` with these inward side normals (doubles), its
+  // sides pushed out towards `centre`, if it is proper and holds the vertices strictly.
+  static std::optional<ClipWindow> fit(const std::vector<std::array<double, 3>>& inward,
+                                       const std::array<double, 3>& centre,
+                                       std::span<const exact::ExactVec> vertices);
   bool proper() const;
 
   std::vector<exact::ExactVec> normals_;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 
 #include "exact/interrupt.h"
 #include "sphere/arrangement.h"
@@ -19,6 +20,7 @@
 #include "visibility/effective_minkowski_envelope.h"
 #include "visibility/occluded_directions.h"
 #include "visibility/occluder_beam.h"
+#include "visibility/occlusion_culling.h"
 #include "visibility/occlusion_probe.h"
 #include "visibility/open_cells.h"
 #include "visibility/redundant_faces.h"
@@ -67,20 +69,27 @@ std::optional<bool> face_contains(const std::vector<ExactVec>& v, const ExactVec
   return true;
 }
 
-// The envelope faces that can change the union inside the window: faces inside larger
-// ones (redundant_faces.h), and faces that meet the window in zero area, change it nowhere.
-std::vector<uint32_t> faces_that_matter(const std::vector<std::vector<ExactVec>>& faces,
-                                        const ClipWindow* clip) {
-  std::vector<uint8_t> left_out = redundant_faces(faces);
-  if (clip) {
-    tbb::parallel_for(size_t{0}, faces.size(),
-                      [&](size_t i) { left_out[i] = left_out[i] || clip->misses(faces[i]); });
-  }
+// The envelope faces that can change the union inside the windows, with the windows each
+// meets (bit k: window k): faces inside larger ones (redundant_faces.h), and faces that
+// meet every window in zero area, change it nowhere.
+struct FacesThatMatter {
   std::vector<uint32_t> kept;
+  std::vector<uint64_t> windows_met;  // of each face
+};
+
+FacesThatMatter faces_that_matter(const std::vector<std::vector<ExactVec>>& faces,
+                                  std::span<const ClipWindow> windows) {
+  const std::vector<uint8_t> redundant = redundant_faces(faces);
+  std::vector<uint64_t> met(faces.size(), 0);
+  tbb::parallel_for(size_t{0}, faces.size(), [&](size_t i) {
+    for (size_t k = 0; k < windows.size() && !redundant[i]; ++k) met[i] |= uint64_t{!windows[k].misses(faces[i])} << k;
+  });
+  FacesThatMatter out;
   for (uint32_t i = 0; i < faces.size(); ++i) {
-    if (!left_out[i]) kept.push_back(i);
+    if (!redundant[i] && (windows.empty() || met[i] != 0)) out.kept.push_back(i);
   }
-  return kept;
+  out.windows_met = std::move(met);
+  return out;
 }
 
 // The closed occluded region, the reference direction it was labelled from, and the cells
@@ -95,7 +104,7 @@ struct Occlusion {
 // Sec. 4): the envelope's faces are the cells, a group's arcs its border chain.
 Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
                              std::span<const uint32_t> o, const DirectionWindow& window,
-                             const ClipWindow* clip, std::vector<ExactVec>& circles,
+                             std::span<const ClipWindow> clip, std::vector<ExactVec>& circles,
                              const std::vector<ExactVec>& points, GlobalOcclusionStatistics* stats) {
   const EffectiveMinkowskiEnvelope eme =
       compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true, &window);
@@ -117,36 +126,43 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     faces.push_back(std::move(v));
     normals.push_back(std::move(n));
   }
-  if (clip) circles.insert(circles.end(), clip->normals().begin(), clip->normals().end());
-  const std::vector<uint32_t> kept = faces_that_matter(faces, clip);
-  spdlog::debug("global occlusion: {} of {} envelope faces lie inside larger ones or miss the window {}",
-                faces.size() - kept.size(), faces.size(), clip ? "around the LVM" : "(none)");
+  for (const ClipWindow& w : clip) circles.insert(circles.end(), w.normals().begin(), w.normals().end());
+  const auto [kept, windows_met] = faces_that_matter(faces, clip);
+  spdlog::debug("global occlusion: {} of {} envelope faces lie inside larger ones or miss the {} windows "
+                "around the LVM", faces.size() - kept.size(), faces.size(), clip.size());
   const ExactVec r = sphere::generic_direction(circles, points);
-  OccludingCells cells;
-  cells.count = kept.size();
-  cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[kept[i]][0]).unit; };
-  cells.boundary = [&](std::span<const uint32_t> members) {
-    std::vector<EnvelopeFace> group;
-    for (uint32_t i : members) group.push_back(eme.faces[kept[i]]);
-    std::vector<ArrangementArc> arcs;
-    for (const EnvelopeBorderEdge& e : border_chain(group)) {
-      const ExactVec &a = sum.at(e.q0, e.p0), &b = sum.at(e.q1, e.p1);
-      arcs.push_back({a, b, exact::cross(a, b), 0, e.multiplicity});
-    }
-    return arcs;
+  auto union_of = [&](std::span<const uint32_t> subset) {
+    OccludingCells cells;
+    cells.count = subset.size();
+    cells.direction = [&](uint32_t i) { return exact::unit_estimate(faces[subset[i]][0]).unit; };
+    cells.boundary = [&](std::span<const uint32_t> members) {
+      std::vector<EnvelopeFace> group;
+      for (uint32_t i : members) group.push_back(eme.faces[subset[i]]);
+      std::vector<ArrangementArc> arcs;
+      for (const EnvelopeBorderEdge& e : border_chain(group)) {
+        const ExactVec &a = std::as_const(sum).at(e.q0, e.p0), &b = std::as_const(sum).at(e.q1, e.p1);
+        arcs.push_back({a, b, exact::cross(a, b), 0, e.multiplicity});
+      }
+      return arcs;
+    };
+    cells.covers_reference = [&](uint32_t i) { return face_contains(faces[subset[i]], r) == true; };
+    cells.windows = clip;
+    cells.meets_window = [&](uint32_t i, size_t k) { return (windows_met[subset[i]] >> k & 1) != 0; };
+    cells.coverage_at = [&](std::span<const uint32_t> members, const ExactVec& u) -> std::optional<int> {
+      int coverage = 0;
+      for (uint32_t i : members) {
+        const std::optional<bool> inside = face_contains(faces[subset[i]], u);
+        if (!inside) return std::nullopt;
+        coverage += *inside;
+      }
+      return coverage;
+    };
+    return occluded_directions(cells, r);
   };
-  cells.covers_reference = [&](uint32_t i) { return face_contains(faces[kept[i]], r) == true; };
-  cells.window = clip;
-  cells.coverage_at = [&](std::span<const uint32_t> members, const ExactVec& u) -> std::optional<int> {
-    int coverage = 0;
-    for (uint32_t i : members) {
-      const std::optional<bool> inside = face_contains(faces[kept[i]], u);
-      if (!inside) return std::nullopt;
-      coverage += *inside;
-    }
-    return coverage;
-  };
-  sphere::Region region = occluded_directions(cells, r);
+  TieredUnionStatistics tiers;
+  sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers);
+  spdlog::debug("global occlusion: {} faces in {} tiers, {} inside the union of the tiers before theirs",
+                tiers.faces, tiers.tiers, tiers.left_out);
   std::vector<OpenCells::Cell> open(faces.size());
   for (size_t i = 0; i < faces.size(); ++i) open[i] = {std::move(faces[i]), std::move(normals[i])};
   return {std::move(region), r, OpenCells(std::move(open))};
@@ -287,7 +303,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   if (stats) stats->occluders_in_beam = beam.size();
   if (beam.empty()) return lvm;
   const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
-  const std::optional<ClipWindow> clip = ClipWindow::around(lvm);
+  const std::vector<ClipWindow> clip = ClipWindow::covering(lvm);
   std::vector<ArrangementArc> arcs;
   std::vector<ArrangementPoint> points;
   sphere::add_image(lvm, kLvm, arcs, points);
@@ -302,7 +318,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const auto union_start = std::chrono::steady_clock::now();
   auto [occluded, r, open_cells] =
       method == OcclusionMethod::kEffectiveMinkowskiEnvelope
-          ? envelope_occlusion(mesh, s, beam, window, clip ? &*clip : nullptr, circles, point_dirs, stats)
+          ? envelope_occlusion(mesh, s, beam, window, clip, circles, point_dirs, stats)
           : convex_decomposition_occlusion(mesh, s, beam, window, circles, point_dirs, stats);
   spdlog::debug("global occlusion: closure of the occluded directions: {} boundary arcs, {:.2f} s",
                 occluded.boundary.size(),

@@ -2,7 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
+#include <chrono>
+#include <numeric>
 
 #include "exact/interrupt.h"
 
@@ -23,42 +27,90 @@ uint64_t morton(const std::array<double, 3>& u) {
   return code;
 }
 
-// A group's arcs and its coverage at the reference, clipped to the window when the arcs
-// meet its boundary generically (left whole otherwise: either gives the same GVM).
-void clip_group(const OccludingCells& cells, std::span<const uint32_t> members,
-                const exact::ExactVec& reference, std::vector<sphere::ArrangementArc>& arcs,
-                int& covering) {
-  const ClipWindow& w = *cells.window;
+// A group's arcs clipped to one window with its coverage at the reference, or none when
+// they meet the window's boundary degenerately.
+std::optional<sphere::Region> clipped_region(const OccludingCells& cells, const ClipWindow& w,
+                                             std::span<const uint32_t> members,
+                                             std::span<const sphere::ArrangementArc> arcs,
+                                             const exact::ExactVec& reference, int covering) {
   const std::optional<int> corner = cells.coverage_at(members, w.corner(0));
-  if (!corner) return;
-  std::optional<std::vector<sphere::ArrangementArc>> clipped = w.clip(arcs, *corner);
-  if (!clipped) return;
-  arcs = std::move(*clipped);
-  if (!w.contains_strictly(reference)) covering = 0;
+  if (!corner) return std::nullopt;
+  const std::optional<std::vector<sphere::ArrangementArc>> clipped = w.clip(arcs, *corner);
+  if (!clipped) return std::nullopt;
+  return sphere::positive_region(*clipped, reference, w.contains_strictly(reference) ? covering : 0);
+}
+
+// The regions of one group: its coverage clipped to each window it meets, or the whole
+// group when it has no windows or meets one degenerately (either gives the same GVM).
+std::vector<sphere::Region> group_regions(const OccludingCells& cells, std::span<const uint32_t> members,
+                                          const exact::ExactVec& reference) {
+  int covering = 0;
+  for (uint32_t i : members) covering += cells.covers_reference(i);
+  const std::vector<sphere::ArrangementArc> arcs = cells.boundary(members);
+  std::vector<sphere::Region> regions(cells.windows.size());
+  bool clipped = !cells.windows.empty();
+  for (size_t k = 0; k < cells.windows.size() && clipped; ++k) {
+    std::vector<uint32_t> meeting;
+    for (uint32_t i : members) {
+      if (cells.meets_window(i, k)) meeting.push_back(i);
+    }
+    if (meeting.empty()) continue;
+    const bool all = meeting.size() == members.size();
+    const std::vector<sphere::ArrangementArc> own = all ? std::vector<sphere::ArrangementArc>{} : cells.boundary(meeting);
+    int own_covering = covering;
+    if (!all) {
+      own_covering = 0;
+      for (uint32_t i : meeting) own_covering += cells.covers_reference(i);
+    }
+    std::optional<sphere::Region> r =
+        clipped_region(cells, cells.windows[k], meeting, all ? arcs : own, reference, own_covering);
+    clipped = r.has_value();
+    if (r) regions[k] = std::move(*r);
+  }
+  if (!clipped) return {sphere::positive_region(arcs, reference, covering)};
+  return regions;
 }
 
 }  // namespace
 
 sphere::Region occluded_directions(const OccludingCells& cells, const exact::ExactVec& reference) {
+  const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<uint64_t, uint32_t>> order(cells.count);
   tbb::parallel_for(uint32_t{0}, static_cast<uint32_t>(cells.count),
                     [&](uint32_t i) { order[i] = {morton(cells.direction(i)), i}; });
   interruption_point();
   std::sort(order.begin(), order.end());
-  std::vector<sphere::Region> groups((order.size() + kGroupCells - 1) / kGroupCells);
-  tbb::parallel_for(size_t{0}, groups.size(), [&](size_t g) {
+  const size_t group_count = (order.size() + kGroupCells - 1) / kGroupCells;
+  std::vector<std::vector<sphere::Region>> groups(group_count);
+  tbb::parallel_for(size_t{0}, group_count, [&](size_t g) {
     std::vector<uint32_t> members;
-    int covering = 0;
     for (size_t k = g * kGroupCells; k < std::min(order.size(), (g + 1) * kGroupCells); ++k) {
       members.push_back(order[k].second);
-      covering += cells.covers_reference(order[k].second);
     }
-    std::vector<sphere::ArrangementArc> arcs = cells.boundary(members);
-    if (cells.window) clip_group(cells, members, reference, arcs, covering);
-    groups[g] = sphere::positive_region(arcs, reference, covering);
+    groups[g] = group_regions(cells, members, reference);
   });
   interruption_point();  // groups left undone when cancelled
-  return sphere::region_union(std::move(groups), reference);
+  // Window by window, so that the first unions merge regions clipped to one window.
+  std::vector<sphere::Region> regions;
+  const size_t windows = std::max<size_t>(1, cells.windows.size());
+  for (size_t k = 0; k < windows; ++k) {
+    for (std::vector<sphere::Region>& group : groups) {
+      if (k >= group.size()) continue;
+      sphere::Region& r = group[k];
+      if (!r.boundary.empty() || r.contains_reference) regions.push_back(std::move(r));
+    }
+  }
+  const auto union_start = std::chrono::steady_clock::now();
+  spdlog::debug("occluded directions: {} cells in {} groups, {} regions, {:.2f} s; {} group arrangement vertices",
+                cells.count, group_count, regions.size(),
+                std::chrono::duration<double>(union_start - start).count(),
+                std::accumulate(regions.begin(), regions.end(), uint64_t{0},
+                                [](uint64_t n, const sphere::Region& r) { return n + r.arrangement_vertices; }));
+  sphere::Region out = sphere::region_union(std::move(regions), reference);
+  spdlog::debug("occluded directions: union {:.2f} s, {} arrangement vertices in all",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - union_start).count(),
+                out.arrangement_vertices);
+  return out;
 }
 
 }  // namespace gvm

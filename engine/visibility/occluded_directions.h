@@ -28,9 +28,11 @@ struct OccludingCells {
   std::function<std::vector<sphere::ArrangementArc>(std::span<const uint32_t>)> boundary;
   // Whether cell i covers the reference direction (which lies on none of their arcs).
   std::function<bool(uint32_t)> covers_reference;
-  // Optional: each group clipped to a window around the LVM (clip_window.h), which then
-  // needs the coverage of a group at a direction (none when it lies on a cell's boundary).
-  const ClipWindow* window = nullptr;
+  // Optional: each group clipped to windows whose interiors together hold the LVM
+  // (clip_window.h), which then needs whether cell i meets window k in positive area, and
+  // the coverage of a group at a direction (none when it lies on a cell's boundary).
+  std::span<const ClipWindow> windows;
+  std::function<bool(uint32_t, size_t)> meets_window;
   std::function<std::optional<int>(std::span<const uint32_t>, const exact::ExactVec&)> coverage_at;
 };
 

@@ -1,0 +1,252 @@
+#include "visibility/occlusion_culling.h"
+
+#include <spdlog/spdlog.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+
+#include "exact/interrupt.h"
+#include "sphere/box_tree.h"
+#include "sphere/d3.h"
+
+namespace gvm {
+namespace {
+
+using exact::ExactVec;
+using namespace sphere;  // D3, Box
+
+// Estimates of unit vertices are within kRadius of the exact directions (else the face is
+// kept), inward side normals within their `error` of the exact ones (a side between
+// vertices e apart turns by up to about 2 kRadius / e); dot products then err by far less
+// than kSlack.
+constexpr double kRadius = 1e-12;
+constexpr double kSlack = 1e-9;
+// The first tier holds this share of the faces, each next tier twice the one before.
+constexpr size_t kFirstTierShare = 16;
+constexpr size_t kMinFirstTier = 256;
+
+struct FaceEstimate {
+  std::vector<D3> u, inward;
+  std::vector<double> error;  // of each inward normal
+  Box box{};
+  double area = 0;
+  bool certain = false;
+};
+
+// The box around a convex face: around its sides, and reaching an axis' pole where the
+// pole may lie inside (there a coordinate peaks inside the face).
+Box face_box(const FaceEstimate& f, const std::vector<exact::UnitEstimate>& v) {
+  Box box = arc_box(v.back(), v[0]);
+  for (size_t i = 0; i + 1 < v.size(); ++i) {
+    const Box side = arc_box(v[i], v[i + 1]);
+    for (int k = 0; k < 3; ++k) {
+      box.lo[k] = std::min(box.lo[k], side.lo[k]);
+      box.hi[k] = std::max(box.hi[k], side.hi[k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    for (const double pole : {-1.0, 1.0}) {
+      bool may_hold = true;
+      for (size_t j = 0; j < f.inward.size(); ++j) may_hold = may_hold && pole * f.inward[j][k] > -(kSlack + f.error[j]);
+      if (may_hold) (pole < 0 ? box.lo[k] : box.hi[k]) = pole;
+    }
+  }
+  return box;
+}
+
+FaceEstimate estimate(const std::vector<ExactVec>& face) {
+  FaceEstimate f;
+  std::vector<exact::UnitEstimate> v;
+  for (const ExactVec& x : face) {
+    v.push_back(exact::unit_estimate(x));
+    if (!(v.back().radius <= kRadius)) return f;
+    f.u.push_back(v.back().unit);
+  }
+  for (size_t i = 0; i < f.u.size(); ++i) {
+    const D3 c = cross(f.u[i], f.u[(i + 1) % f.u.size()]);
+    const double length = norm(c);
+    f.inward.push_back(length > 0 ? normalized(c) : D3{});
+    f.error.push_back(length > 0 ? 8 * kRadius / length + 1e-15 : INFINITY);
+  }
+  for (size_t i = 1; i + 1 < f.u.size(); ++i) {
+    f.area += norm(cross(add(f.u[i], f.u[0], -1), add(f.u[i + 1], f.u[0], -1))) / 2;
+  }
+  f.box = face_box(f, v);
+  f.certain = true;
+  return f;
+}
+
+// Whether x certainly lies inside the face, away from its sides.
+bool strictly_inside(const FaceEstimate& f, const D3& x) {
+  for (size_t j = 0; j < f.inward.size(); ++j) {
+    if (!(dot(f.inward[j], x) > kSlack + f.error[j])) return false;
+  }
+  return true;
+}
+
+// A direction within kRadius of x: its estimate, else its exact value rounded.
+D3 direction(const ExactVec& x) {
+  const exact::UnitEstimate e = exact::unit_estimate(x);
+  return e.radius <= kRadius ? e.unit : x.unit();
+}
+
+// A minor piece of a boundary arc of the union so far, in doubles, within kRadius of the
+// exact one, and a box around it.
+struct ArcEstimate {
+  D3 a, b, normal;
+  Box box;
+};
+
+// The arc in pieces of at most a right angle (an arc of a half circle or more, as a
+// window's side or a long side of a face can give, fits no small box and no test below).
+void add_pieces(const ArrangementArc& arc, std::vector<ArcEstimate>& out) {
+  const D3 a = direction(arc.from), b = direction(arc.to), n = normalized(arc.normal.unit());
+  const D3 side = normalized(cross(n, a));
+  double turn = std::atan2(dot(b, side), dot(b, a));
+  if (turn < 0) turn += 2 * M_PI;
+  // Whether the arc is minor is decided exactly: near a turn of 0 or 2 pi the doubles cannot.
+  if (exact::sign_det(arc.from, arc.to, arc.normal) == Sign::kPositive) {
+    if (turn > M_PI) turn = turn > 1.5 * M_PI ? 0 : M_PI;
+  } else if (turn < M_PI) {
+    turn = turn < 0.5 * M_PI ? 2 * M_PI : M_PI;
+  }
+  const int pieces = std::max(1, static_cast<int>(std::ceil(turn / (M_PI / 2))));
+  D3 from = a;
+  for (int k = 1; k <= pieces; ++k) {
+    const double t = turn * k / pieces;
+    const D3 to = k == pieces ? b : add(D3{a[0] * std::cos(t), a[1] * std::cos(t), a[2] * std::cos(t)}, side, std::sin(t));
+    // The ends are within kRadius (and the rounding of the turn) of points of the arc.
+    const exact::UnitEstimate ef{from, 4 * kRadius}, et{to, 4 * kRadius};
+    out.push_back({from, to, n, arc_box(ef, et)});
+    from = to;
+  }
+}
+
+// A great circle separates the face from the arc: the arc's own circle (all the face's
+// vertices strictly on one side of it), or the circle of a side of the face (both ends
+// of the arc strictly outside it; the arc is minor, so all of it is).
+bool separated(const FaceEstimate& f, const ArcEstimate& arc) {
+  bool above = true, below = true;
+  for (const D3& u : f.u) {
+    const double d = dot(arc.normal, u);
+    above = above && d > kSlack;
+    below = below && d < -kSlack;
+  }
+  if (above || below) return true;
+  for (size_t j = 0; j < f.inward.size(); ++j) {
+    const double limit = -(kSlack + f.error[j]);
+    if (dot(f.inward[j], arc.a) < limit && dot(f.inward[j], arc.b) < limit) return true;
+  }
+  return false;
+}
+
+// The union of the tiers so far, and what the test of a face against it needs.
+class UnionSoFar {
+ public:
+  UnionSoFar(sphere::Region region, std::span<const FaceEstimate> est, std::span<const uint32_t> in_union,
+             std::span<const ClipWindow> windows)
+      : region_(std::move(region)), est_(est), windows_(windows) {
+    for (const ArrangementArc& a : region_.boundary) add_pieces(a, arcs_);
+    std::vector<Box> arc_boxes;
+    for (const ArcEstimate& e : arcs_) arc_boxes.push_back(e.box);
+    arc_tree_.emplace(arc_boxes);
+    std::vector<Box> face_boxes;
+    for (uint32_t i : in_union) {
+      if (!est_[i].certain) continue;
+      members_.push_back(i);
+      face_boxes.push_back(est_[i].box);
+    }
+    face_tree_.emplace(face_boxes);
+  }
+
+  const sphere::Region& region() const { return region_; }
+
+  // Whether face i certainly lies inside the union: no boundary arc meets it, and a point
+  // inside it lies strictly inside a face of the union (and inside a window, when the
+  // union was clipped to windows).
+  bool holds(const FaceEstimate& f) const {
+    if (!f.certain) return false;
+    for (uint32_t a : arc_tree_->overlapping(f.box)) {
+      if (!separated(f, arcs_[a])) return false;
+    }
+    D3 sum{};
+    for (const D3& u : f.u) sum = add(sum, u);
+    const D3 c = normalized(sum);
+    if (!strictly_inside(f, c)) return false;
+    if (!windows_.empty()) {
+      const ExactVec x = ExactVec::from_point({c[0], c[1], c[2]});
+      if (std::none_of(windows_.begin(), windows_.end(),
+                       [&](const ClipWindow& w) { return w.contains_strictly(x); })) {
+        return false;
+      }
+    }
+    const Box point{{c[0] - kSlack, c[1] - kSlack, c[2] - kSlack}, {c[0] + kSlack, c[1] + kSlack, c[2] + kSlack}};
+    for (uint32_t g : face_tree_->overlapping(point)) {
+      if (strictly_inside(est_[members_[g]], c)) return true;
+    }
+    return false;
+  }
+
+ private:
+  sphere::Region region_;
+  std::span<const FaceEstimate> est_;
+  std::span<const ClipWindow> windows_;
+  std::vector<ArcEstimate> arcs_;
+  std::optional<BoxTree> arc_tree_;
+  std::vector<uint32_t> members_;  // positions of the faces in the union
+  std::optional<BoxTree> face_tree_;
+};
+
+}  // namespace
+
+sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std::span<const uint32_t> kept,
+                              std::span<const ClipWindow> windows,
+                              const std::function<sphere::Region(std::span<const uint32_t>)>& union_of,
+                              const ExactVec& reference, TieredUnionStatistics* stats) {
+  // Faces by their positions in `kept`, largest first.
+  std::vector<FaceEstimate> est(kept.size());
+  tbb::parallel_for(size_t{0}, kept.size(), [&](size_t k) { est[k] = estimate(faces[kept[k]]); });
+  interruption_point();
+  std::vector<uint32_t> order(kept.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return est[a].area > est[b].area; });
+  TieredUnionStatistics local;
+  local.faces = order.size();
+  std::vector<uint32_t> in_union;  // positions
+  std::optional<UnionSoFar> so_far;
+  size_t tier = std::max(kMinFirstTier, order.size() / kFirstTierShare);
+  for (size_t next = 0;; next += tier, tier *= 2) {
+    std::span<const uint32_t> candidates(order.data() + next, std::min(tier, order.size() - next));
+    std::vector<uint8_t> inside(candidates.size(), 0);
+    if (so_far) {
+      tbb::parallel_for(size_t{0}, candidates.size(),
+                        [&](size_t k) { inside[k] = so_far->holds(est[candidates[k]]); });
+      interruption_point();
+    }
+    std::vector<uint32_t> members;
+    for (size_t k = 0; k < candidates.size(); ++k) {
+      if (!inside[k]) members.push_back(candidates[k]);
+    }
+    ++local.tiers;
+    local.left_out += candidates.size() - members.size();
+    spdlog::debug("union by tiers: tier {}: {} faces, {} left out", local.tiers, candidates.size(),
+                  candidates.size() - members.size());
+    std::vector<uint32_t> member_faces;
+    for (uint32_t k : members) member_faces.push_back(kept[k]);
+    std::vector<sphere::Region> parts;
+    if (so_far) parts.push_back(so_far->region());
+    parts.push_back(union_of(member_faces));
+    sphere::Region region = sphere::region_union(std::move(parts), reference);
+    if (next + tier >= order.size()) {
+      if (stats) *stats = local;
+      return region;
+    }
+    in_union.insert(in_union.end(), members.begin(), members.end());
+    so_far.emplace(std::move(region), est, in_union, windows);
+  }
+}
+
+}  // namespace gvm

@@ -1,0 +1,124 @@
+// The union built tier by tier, faces inside the earlier tiers left out, against
+// brute-force membership in all the faces.
+#include "visibility/occlusion_culling.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "support/spherical_polygons.h"
+
+namespace gvm {
+namespace {
+
+using namespace sphere;
+using namespace sphere::test_polygons;
+
+// Counter-clockwise triangle (seen from outside) of about the given size around (cx, cy, 8).
+Polygon triangle(std::mt19937_64& rng, double cx, double cy, double radius) {
+  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(0.5, 1.0);
+  double a[3];
+  for (double& t : a) t = angle(rng);
+  std::sort(a, a + 3);
+  Polygon p;
+  for (double t : a) {
+    const double r = radius * spread(rng);
+    p.push_back(v(cx + r * std::cos(t), cy + r * std::sin(t), 8));
+  }
+  if (exact::sign_det(p[0], p[1], p[2]) != Sign::kPositive) std::swap(p[1], p[2]);
+  return p;
+}
+
+// Many triangles overlapping deeply: most small ones inside the union of the larger ones
+// but inside none of them alone, some across its boundary.
+std::vector<Polygon> overlapping_triangles(uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> centre(-5, 5), size(0.2, 1.2);
+  std::vector<Polygon> faces;
+  for (int i = 0; i < 150; ++i) faces.push_back(triangle(rng, centre(rng), centre(rng), 2.5));
+  for (int i = 0; i < 1500; ++i) faces.push_back(triangle(rng, 1.3 * centre(rng), 1.3 * centre(rng), size(rng)));
+  return faces;
+}
+
+// The closed union of some of the faces, in groups merged up a tree, as occluded_directions
+// builds it (without windows).
+Region union_of(const std::vector<Polygon>& faces, std::span<const uint32_t> subset, const ExactVec& r) {
+  std::vector<Region> groups;
+  for (size_t g = 0; g < subset.size(); g += 64) {
+    std::vector<Polygon> members;
+    for (size_t k = g; k < std::min(subset.size(), g + 64); ++k) members.push_back(faces[subset[k]]);
+    groups.push_back(positive_region(arcs_of(members), r, covering(members, r)));
+  }
+  return region_union(std::move(groups), r);
+}
+
+TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
+  const std::vector<Polygon> faces = overlapping_triangles(21);
+  std::vector<uint32_t> all(faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  const D3 r = unit_d({-3, 5, -17});
+  TieredUnionStatistics stats;
+  const Region region = union_by_tiers(
+      faces, all, {}, [&](std::span<const uint32_t> subset) { return union_of(faces, subset, v(r)); }, v(r), &stats);
+  EXPECT_EQ(stats.faces, faces.size());
+  EXPECT_GT(stats.tiers, 2u);
+  EXPECT_GT(stats.left_out, 300u) << "the test no longer leaves faces out";
+
+  const std::vector<DArc> circles = to_doubles(arcs_of(faces)), boundary = to_doubles(region.boundary);
+  int inside = 0, outside = 0;
+  for (const D3& u : samples(5, 3000)) {
+    if (near_a_circle(circles, u)) continue;
+    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
+    if (!w) continue;
+    const bool expected = covering(faces, v(u)) > 0;
+    ASSERT_EQ(*w > 0, expected) << "at " << u[0] << " " << u[1] << " " << u[2];
+    (expected ? inside : outside)++;
+  }
+  EXPECT_GT(inside, 500);
+  EXPECT_GT(outside, 500);
+}
+
+TEST(OcclusionCulling, ClippedToWindowsTheUnionIsRightInsideThem) {
+  // A hemisphere around a tilted axis: four windows, the union clipped to each.
+  const std::vector<Polygon> faces = overlapping_triangles(8);
+  const D3 axis = unit_d({0.3, -0.2, 1});
+  const std::vector<ClipWindow> windows = ClipWindow::covering(SphericalImage::hemisphere(v(axis)));
+  ASSERT_EQ(windows.size(), 4u);
+  const D3 r = unit_d({-3, 5, -17});
+  auto clipped_union = [&](std::span<const uint32_t> subset) {
+    std::vector<Region> parts;
+    for (const ClipWindow& w : windows) {
+      std::vector<Polygon> members;
+      for (uint32_t i : subset) members.push_back(faces[i]);
+      std::optional<std::vector<ArrangementArc>> arcs = w.clip(arcs_of(members), covering(members, w.corner(0)));
+      if (!arcs) return union_of(faces, subset, v(r));  // degenerate: unclipped
+      parts.push_back(positive_region(*arcs, v(r), w.contains_strictly(v(r)) ? covering(members, v(r)) : 0));
+    }
+    return region_union(std::move(parts), v(r));
+  };
+  std::vector<uint32_t> all(faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  TieredUnionStatistics stats;
+  const Region region = union_by_tiers(faces, all, windows, clipped_union, v(r), &stats);
+  EXPECT_GT(stats.left_out, 300u);
+
+  std::vector<DArc> circles = to_doubles(arcs_of(faces));
+  for (const ClipWindow& w : windows) {
+    for (const ExactVec& n : w.normals()) circles.push_back({{}, {}, unit_d(n.unit())});
+  }
+  const std::vector<DArc> boundary = to_doubles(region.boundary);
+  int checked = 0;
+  for (const D3& u : samples(6, 3000)) {
+    if (dot_d(u, axis) < 0 || near_a_circle(circles, u)) continue;  // only the hemisphere matters
+    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
+    if (!w) continue;
+    ASSERT_EQ(*w > 0, covering(faces, v(u)) > 0) << "at " << u[0] << " " << u[1] << " " << u[2];
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+}  // namespace
+}  // namespace gvm
