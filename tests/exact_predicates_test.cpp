@@ -137,6 +137,39 @@ TEST(ExactPredicates, RandomDegenerateConfigurationsMatchRationalReference) {
   EXPECT_GT(zeros, 1000);  // the construction really is degenerate
 }
 
+TEST(ExactPredicates, AxisAlignedPlanesMatchRationalReference) {
+  // orient3d and orient2d decide planes normal to an axis, and triangles sharing a
+  // coordinate, without their exact stage: every sign against rationals, including
+  // points on the plane, degenerate triangles and coordinates that differ in the last bit.
+  std::mt19937_64 rng(20261129);
+  std::uniform_int_distribution<int> small(-3, 3), axis_of(0, 2), pick(0, 3);
+  const double levels[] = {0.1, 0.1 + 0x1p-55, 0.3, -2.5};
+  auto coordinate = [&] { return pick(rng) == 0 ? levels[pick(rng)] : small(rng) * 0.1; };
+  int zeros = 0, aligned = 0;
+  for (int iter = 0; iter < 20000; ++iter) {
+    const int axis = axis_of(rng);
+    const double level = levels[pick(rng)];
+    Point3 t[3], d{coordinate(), coordinate(), coordinate()};
+    for (Point3& p : t) {
+      p = {coordinate(), coordinate(), coordinate()};
+      if (iter % 4 != 3) (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = level;  // on the plane
+    }
+    if (iter % 3 == 0) (axis == 0 ? d.x : axis == 1 ? d.y : d.z) = level;
+    const Sign got = orient3d(t[0], t[1], t[2], d);
+    ASSERT_EQ(got, reference_orient3d(t[0], t[1], t[2], d)) << "iteration " << iter;
+    zeros += got == Sign::kZero;
+    aligned += iter % 4 != 3;
+    for (int drop = 0; drop < 3; ++drop) {
+      const Point3 o{0, 0, 0}, e{drop == 0 ? 1.0 : 0.0, drop == 1 ? 1.0 : 0.0, drop == 2 ? 1.0 : 0.0};
+      // Component `drop` of (t1 - t0) x (t2 - t0) is det(t1 - t0, t2 - t0, e_drop).
+      ASSERT_EQ(orient2d(t[0], t[1], t[2], drop), reference_det_diff(t[0], t[1], t[0], t[2], o, e))
+          << "iteration " << iter << ", drop " << drop;
+    }
+  }
+  EXPECT_GT(zeros, 3000);
+  EXPECT_GT(aligned, 10000);
+}
+
 TEST(ExactVec, CrossProductDirectionsAreExact) {
   // Edge direction of two rotated walls meeting at a concave edge: n0 x n1 is exactly the
   // rotated z axis.

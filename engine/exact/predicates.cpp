@@ -33,6 +33,16 @@ T coord(const V<T>& v, int i) {
 }  // namespace
 
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  // A plane normal to an axis (most planes of CAD parts): the determinant is
+  // (d - a)[axis] times the orientation of a, b, c seen along the axis, both signs exact
+  // without the expensive exact stage, which the filter otherwise needs whenever d lies
+  // on the plane (a box corner on a face's plane, a vertex of a coplanar face).
+  for (int axis = 0; axis < 3; ++axis) {
+    if (a[axis] == b[axis] && a[axis] == c[axis]) {
+      const Sign height = d[axis] > a[axis] ? Sign::kPositive : d[axis] < a[axis] ? Sign::kNegative : Sign::kZero;
+      return height == Sign::kZero ? Sign::kZero : height * orient2d(a, b, c, axis);
+    }
+  }
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
     return det3(diff<T>(b, a), diff<T>(c, a), diff<T>(d, a));
@@ -58,6 +68,9 @@ Sign dot_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3
 
 Sign orient2d(const Point3& a, const Point3& b, const Point3& c, int drop) {
   const int i = (drop + 1) % 3, j = (drop + 2) % 3;
+  // Both products vanish when a, b, c share a coordinate (the normal of an axis-aligned
+  // plane has zero components): zero, without the exact stage the filter would need.
+  if ((a[i] == b[i] && a[i] == c[i]) || (a[j] == b[j] && a[j] == c[j])) return Sign::kZero;
   return filtered_sign([&](auto tag) {
     using T = decltype(tag);
     auto u = diff<T>(b, a);
