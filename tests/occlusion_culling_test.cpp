@@ -16,29 +16,14 @@ namespace {
 using namespace sphere;
 using namespace sphere::test_polygons;
 
-// Counter-clockwise triangle (seen from outside) of about the given size around (cx, cy, 8).
-Polygon triangle(std::mt19937_64& rng, double cx, double cy, double radius) {
-  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(0.5, 1.0);
-  double a[3];
-  for (double& t : a) t = angle(rng);
-  std::sort(a, a + 3);
-  Polygon p;
-  for (double t : a) {
-    const double r = radius * spread(rng);
-    p.push_back(v(cx + r * std::cos(t), cy + r * std::sin(t), 8));
-  }
-  if (exact::sign_det(p[0], p[1], p[2]) != Sign::kPositive) std::swap(p[1], p[2]);
-  return p;
-}
-
 // Many triangles overlapping deeply: most small ones inside the union of the larger ones
 // but inside none of them alone, some across its boundary.
 std::vector<Polygon> overlapping_triangles(uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> centre(-5, 5), size(0.2, 1.2);
   std::vector<Polygon> faces;
-  for (int i = 0; i < 150; ++i) faces.push_back(triangle(rng, centre(rng), centre(rng), 2.5));
-  for (int i = 0; i < 1500; ++i) faces.push_back(triangle(rng, 1.3 * centre(rng), 1.3 * centre(rng), size(rng)));
+  for (int i = 0; i < 150; ++i) faces.push_back(triangle_around(rng, centre(rng), centre(rng), 2.5, 0.5));
+  for (int i = 0; i < 1500; ++i) faces.push_back(triangle_around(rng, 1.3 * centre(rng), 1.3 * centre(rng), size(rng), 0.5));
   return faces;
 }
 

@@ -13,21 +13,6 @@ namespace {
 
 using namespace sphere::test_polygons;
 
-// Counter-clockwise triangle (seen from outside) of the given size around (cx, cy, 8).
-Polygon triangle(std::mt19937_64& rng, double cx, double cy, double radius) {
-  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(0.6, 1.0);
-  double a[3];
-  for (double& t : a) t = angle(rng);
-  std::sort(a, a + 3);
-  Polygon p;
-  for (double t : a) {
-    const double r = radius * spread(rng);
-    p.push_back(v(cx + r * std::cos(t), cy + r * std::sin(t), 8));
-  }
-  if (exact::sign_det(p[0], p[1], p[2]) != Sign::kPositive) std::swap(p[1], p[2]);
-  return p;
-}
-
 bool inside_closed(const Polygon& p, const ExactVec& u) {
   for (size_t i = 0; i < p.size(); ++i) {
     if (exact::sign_det(p[i], p[(i + 1) % p.size()], u) == Sign::kNegative) return false;
@@ -39,8 +24,8 @@ TEST(RedundantFaces, EveryFaceLeftOutLiesInTheKeptOnes) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> centre(-6, 6);
   std::vector<Polygon> faces;
-  for (int i = 0; i < 40; ++i) faces.push_back(triangle(rng, centre(rng), centre(rng), 9));
-  for (int i = 0; i < 400; ++i) faces.push_back(triangle(rng, centre(rng), centre(rng), 0.3));
+  for (int i = 0; i < 40; ++i) faces.push_back(triangle_around(rng, centre(rng), centre(rng), 9));
+  for (int i = 0; i < 400; ++i) faces.push_back(triangle_around(rng, centre(rng), centre(rng), 0.3));
   const std::vector<uint8_t> left_out = redundant_faces(faces);
   ASSERT_EQ(left_out.size(), faces.size());
   int count = 0;

@@ -140,6 +140,23 @@ inline std::vector<D3> samples(uint64_t seed, int random_count = 1500) {
   return out;
 }
 
+// Counter-clockwise triangle (seen from outside) of about the given size around (cx, cy, 8):
+// corners at random angles, at `radius` times a random factor in [min_spread, 1).
+inline Polygon triangle_around(std::mt19937_64& rng, double cx, double cy, double radius,
+                               double min_spread = 0.6) {
+  std::uniform_real_distribution<double> angle(0, 2 * kPi), spread(min_spread, 1.0);
+  double a[3];
+  for (double& t : a) t = angle(rng);
+  std::sort(a, a + 3);
+  Polygon p;
+  for (double t : a) {
+    const double r = radius * spread(rng);
+    p.push_back(v(cx + r * std::cos(t), cy + r * std::sin(t), 8));
+  }
+  if (exact::sign_det(p[0], p[1], p[2]) != Sign::kPositive) std::swap(p[1], p[2]);
+  return p;
+}
+
 // Random counter-clockwise triangle around +z (vertices on the plane z = 8).
 inline Polygon random_triangle(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> centre(-3, 3), radius(0.7, 3), angle(0, 2 * kPi);
