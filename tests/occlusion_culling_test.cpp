@@ -49,6 +49,7 @@ TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
       faces, all, {}, [&](std::span<const uint32_t> subset) { return union_of(faces, subset, v(r)); }, v(r), &stats);
   EXPECT_EQ(stats.faces, faces.size());
   EXPECT_GT(stats.tiers, 2u);
+  EXPECT_FALSE(stats.one_union);
   EXPECT_GT(stats.left_out, 300u) << "the test no longer leaves faces out";
 
   const std::vector<DArc> circles = to_doubles(arcs_of(faces)), boundary = to_doubles(region.boundary);
@@ -63,6 +64,48 @@ TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
   }
   EXPECT_GT(inside, 500);
   EXPECT_GT(outside, 500);
+}
+
+TEST(OcclusionCulling, FacesThatDoNotLieInsideOthersAreMergedInOneUnion) {
+  // Small triangles scattered far apart: the second tier finds nothing inside the first.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> centre(-6, 6);
+  std::vector<Polygon> faces;
+  for (int i = 0; i < 1200; ++i) faces.push_back(triangle_around(rng, centre(rng), centre(rng), 0.05, 0.5));
+  std::vector<uint32_t> all(faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  const D3 r = unit_d({-3, 5, -17});
+  std::vector<size_t> calls;
+  auto union_counted = [&](std::span<const uint32_t> subset) {
+    calls.push_back(subset.size());
+    return union_of(faces, subset, v(r));
+  };
+  TieredUnionStatistics stats;
+  // Kept in tiers while the union is small (the default policy: a second tier of 4,096
+  // faces or more), merged at once when it counts as large.
+  union_by_tiers(faces, all, {}, union_counted, v(r), &stats);
+  EXPECT_FALSE(stats.one_union);
+  EXPECT_GT(calls.size(), 2u);
+  calls.clear();
+  const Region region = union_by_tiers(faces, all, {}, union_counted, v(r), &stats, {.large_tier = 512});
+  EXPECT_TRUE(stats.one_union);
+  EXPECT_EQ(stats.left_out, 0u);
+  ASSERT_EQ(calls.size(), 2u);  // the first tier, then all faces at once
+  EXPECT_EQ(calls.back(), faces.size());
+
+  const std::vector<DArc> circles = to_doubles(arcs_of(faces)), boundary = to_doubles(region.boundary);
+  int inside = 0, checked = 0;
+  for (const D3& u : samples(7, 3000)) {
+    if (near_a_circle(circles, u)) continue;
+    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
+    if (!w) continue;
+    const bool expected = covering(faces, v(u)) > 0;
+    ASSERT_EQ(*w > 0, expected) << "at " << u[0] << " " << u[1] << " " << u[2];
+    inside += expected;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(inside, 0);
 }
 
 TEST(OcclusionCulling, ClippedToWindowsTheUnionIsRightInsideThem) {

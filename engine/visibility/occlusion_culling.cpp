@@ -24,9 +24,6 @@ using namespace sphere;  // D3, Box
 // than kSlack.
 constexpr double kRadius = 1e-12;
 constexpr double kSlack = 1e-9;
-// The first tier holds this share of the faces, each next tier twice the one before.
-constexpr size_t kFirstTierShare = 16;
-constexpr size_t kMinFirstTier = 256;
 
 struct FaceEstimate {
   std::vector<D3> u, inward;
@@ -205,7 +202,8 @@ class UnionSoFar {
 sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std::span<const uint32_t> kept,
                               std::span<const ClipWindow> windows,
                               const std::function<sphere::Region(std::span<const uint32_t>)>& union_of,
-                              const ExactVec& reference, TieredUnionStatistics* stats) {
+                              const ExactVec& reference, TieredUnionStatistics* stats,
+                              const TierPolicy& policy) {
   // Faces by their positions in `kept`, largest first.
   std::vector<FaceEstimate> est(kept.size());
   tbb::parallel_for(size_t{0}, kept.size(), [&](size_t k) { est[k] = estimate(faces[kept[k]]); });
@@ -217,7 +215,7 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
   local.faces = order.size();
   std::vector<uint32_t> in_union;  // positions
   std::optional<UnionSoFar> so_far;
-  size_t tier = std::max(kMinFirstTier, order.size() / kFirstTierShare);
+  size_t tier = std::max(policy.min_first_tier, order.size() / policy.first_tier_share);
   for (size_t next = 0;; next += tier, tier *= 2) {
     std::span<const uint32_t> candidates(order.data() + next, std::min(tier, order.size() - next));
     std::vector<uint8_t> inside(candidates.size(), 0);
@@ -230,10 +228,17 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
     for (size_t k = 0; k < candidates.size(); ++k) {
       if (!inside[k]) members.push_back(candidates[k]);
     }
+    const size_t left_out = candidates.size() - members.size();
+    const bool large = candidates.size() >= policy.large_tier;
+    if (local.tiers == 1 && large && left_out * policy.pays_from < candidates.size()) {
+      spdlog::debug("union by tiers: {} of {} faces of tier 2 left out: one union of all faces", left_out,
+                    candidates.size());
+      if (stats) *stats = {1, order.size(), 0, true};
+      return union_of(kept);
+    }
     ++local.tiers;
-    local.left_out += candidates.size() - members.size();
-    spdlog::debug("union by tiers: tier {}: {} faces, {} left out", local.tiers, candidates.size(),
-                  candidates.size() - members.size());
+    local.left_out += left_out;
+    spdlog::debug("union by tiers: tier {}: {} faces, {} left out", local.tiers, candidates.size(), left_out);
     std::vector<uint32_t> member_faces;
     for (uint32_t k : members) member_faces.push_back(kept[k]);
     std::vector<sphere::Region> parts;

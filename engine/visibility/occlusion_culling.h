@@ -26,17 +26,33 @@
 
 namespace gvm {
 
+// The first tier holds 1/first_tier_share of the faces (at least min_first_tier), each next
+// tier twice the one before. Tiers pay only when later faces lie inside earlier ones: in a
+// large union (a second tier of large_tier faces or more) of which fewer than 1/pays_from
+// of the second tier lies inside the first, the faces are merged in one union instead, as
+// before the tiers. On piattello.stp's face 15 (103,001 faces, none inside another) the
+// tiers left nothing out, and the groups of its later tiers grew past 11 GB where the
+// groups of all its faces at once stay under 2 GB. Smaller unions keep their tiers: later
+// tiers still leave faces out (prusa_y-rod-holder F16: 6% of tier 3, all of tier 5), and
+// merging all at once there made the Prusa parts 2-17% slower.
+struct TierPolicy {
+  size_t first_tier_share = 16, min_first_tier = 256;
+  size_t large_tier = 4096, pays_from = 8;
+};
+
 struct TieredUnionStatistics {
   size_t tiers = 0, faces = 0, left_out = 0;
+  bool one_union = false;  // the tiers did not pay: all faces merged at once
 };
 
 // faces[i]: a projected face, a convex polygon counter-clockwise around its inside, inside
 // an open hemisphere. union_of(indices) is the closed union of those faces (labelled from
 // `reference`), clipped to `windows` if there are any (occluded_directions.h). Returns the
-// same for faces[kept].
+// same for faces[kept]: union_of(kept) itself when the tiers do not pay (TierPolicy).
 sphere::Region union_by_tiers(std::span<const std::vector<exact::ExactVec>> faces,
                               std::span<const uint32_t> kept, std::span<const ClipWindow> windows,
                               const std::function<sphere::Region(std::span<const uint32_t>)>& union_of,
-                              const exact::ExactVec& reference, TieredUnionStatistics* stats = nullptr);
+                              const exact::ExactVec& reference, TieredUnionStatistics* stats = nullptr,
+                              const TierPolicy& policy = {});
 
 }  // namespace gvm
