@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -39,6 +40,27 @@ Region union_of(const std::vector<Polygon>& faces, std::span<const uint32_t> sub
   return region_union(std::move(groups), r);
 }
 
+// The region against brute-force membership in the faces at sample directions away from
+// every circle (and, when given, only those `considered`): counts of the directions
+// checked inside and outside.
+struct Checked {
+  int inside = 0, outside = 0;
+};
+
+void check_against_faces(const std::vector<Polygon>& faces, const std::vector<DArc>& circles,
+                         const Region& region, const D3& r, uint64_t seed, Checked& checked,
+                         const std::function<bool(const D3&)>& considered = {}) {
+  const std::vector<DArc> boundary = to_doubles(region.boundary);
+  for (const D3& u : samples(seed, 3000)) {
+    if ((considered && !considered(u)) || near_a_circle(circles, u)) continue;
+    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
+    if (!w) continue;
+    const bool expected = covering(faces, v(u)) > 0;
+    ASSERT_EQ(*w > 0, expected) << "at " << u[0] << " " << u[1] << " " << u[2];
+    (expected ? checked.inside : checked.outside)++;
+  }
+}
+
 TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
   const std::vector<Polygon> faces = overlapping_triangles(21);
   std::vector<uint32_t> all(faces.size());
@@ -52,18 +74,10 @@ TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
   EXPECT_FALSE(stats.one_union);
   EXPECT_GT(stats.left_out, 300u) << "the test no longer leaves faces out";
 
-  const std::vector<DArc> circles = to_doubles(arcs_of(faces)), boundary = to_doubles(region.boundary);
-  int inside = 0, outside = 0;
-  for (const D3& u : samples(5, 3000)) {
-    if (near_a_circle(circles, u)) continue;
-    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
-    if (!w) continue;
-    const bool expected = covering(faces, v(u)) > 0;
-    ASSERT_EQ(*w > 0, expected) << "at " << u[0] << " " << u[1] << " " << u[2];
-    (expected ? inside : outside)++;
-  }
-  EXPECT_GT(inside, 500);
-  EXPECT_GT(outside, 500);
+  Checked checked;
+  check_against_faces(faces, to_doubles(arcs_of(faces)), region, r, 5, checked);
+  EXPECT_GT(checked.inside, 500);
+  EXPECT_GT(checked.outside, 500);
 }
 
 TEST(OcclusionCulling, FacesThatDoNotLieInsideOthersAreMergedInOneUnion) {
@@ -93,19 +107,10 @@ TEST(OcclusionCulling, FacesThatDoNotLieInsideOthersAreMergedInOneUnion) {
   ASSERT_EQ(calls.size(), 2u);  // the first tier, then all faces at once
   EXPECT_EQ(calls.back(), faces.size());
 
-  const std::vector<DArc> circles = to_doubles(arcs_of(faces)), boundary = to_doubles(region.boundary);
-  int inside = 0, checked = 0;
-  for (const D3& u : samples(7, 3000)) {
-    if (near_a_circle(circles, u)) continue;
-    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
-    if (!w) continue;
-    const bool expected = covering(faces, v(u)) > 0;
-    ASSERT_EQ(*w > 0, expected) << "at " << u[0] << " " << u[1] << " " << u[2];
-    inside += expected;
-    ++checked;
-  }
-  EXPECT_GT(checked, 1000);
-  EXPECT_GT(inside, 0);
+  Checked checked;
+  check_against_faces(faces, to_doubles(arcs_of(faces)), region, r, 7, checked);
+  EXPECT_GT(checked.inside + checked.outside, 1000);
+  EXPECT_GT(checked.inside, 0);
 }
 
 TEST(OcclusionCulling, ClippedToWindowsTheUnionIsRightInsideThem) {
@@ -136,16 +141,9 @@ TEST(OcclusionCulling, ClippedToWindowsTheUnionIsRightInsideThem) {
   for (const ClipWindow& w : windows) {
     for (const ExactVec& n : w.normals()) circles.push_back({{}, {}, unit_d(n.unit())});
   }
-  const std::vector<DArc> boundary = to_doubles(region.boundary);
-  int checked = 0;
-  for (const D3& u : samples(6, 3000)) {
-    if (dot_d(u, axis) < 0 || near_a_circle(circles, u)) continue;  // only the hemisphere matters
-    const std::optional<int> w = winding(boundary, r, u, region.contains_reference ? 1 : 0);
-    if (!w) continue;
-    ASSERT_EQ(*w > 0, covering(faces, v(u)) > 0) << "at " << u[0] << " " << u[1] << " " << u[2];
-    ++checked;
-  }
-  EXPECT_GT(checked, 1000);
+  Checked checked;  // only the hemisphere matters
+  check_against_faces(faces, circles, region, r, 6, checked, [&](const D3& u) { return dot_d(u, axis) >= 0; });
+  EXPECT_GT(checked.inside + checked.outside, 1000);
 }
 
 }  // namespace

@@ -30,8 +30,8 @@ void round_outwards(Box& b) {
 // Pairs sorted as std::sort sorts them, by radix on their packed keys: sorting took a
 // twelfth of a whole part's analysis (prusa_y-rod-holder, one thread). The radix sort
 // needs twice the pairs' memory besides them, so the largest lists are sorted in place:
-// with the radix sort for every size, piattello.stp peaked at 12.9 GB in the unions of
-// its faces with 10^5 envelope faces, 8.2 GB with this bound.
+// with the radix sort for every size, piattello.stp peaked at 12.9 GB in the union of
+// its face with 10^5 envelope faces, about 6.5 GB with this bound.
 constexpr size_t kRadixFrom = 4096, kRadixUpTo = size_t{1} << 23;
 
 void sort_pairs(std::vector<std::pair<uint32_t, uint32_t>>& pairs) {

@@ -233,7 +233,7 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
     if (local.tiers == 1 && large && left_out * policy.pays_from < candidates.size()) {
       spdlog::debug("union by tiers: {} of {} faces of tier 2 left out: one union of all faces", left_out,
                     candidates.size());
-      if (stats) *stats = {1, order.size(), 0, true};
+      if (stats) *stats = {.tiers = 1, .faces = order.size(), .one_union = true};
       return union_of(kept);
     }
     ++local.tiers;
