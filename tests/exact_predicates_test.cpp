@@ -137,6 +137,62 @@ TEST(ExactPredicates, RandomDegenerateConfigurationsMatchRationalReference) {
   EXPECT_GT(zeros, 1000);  // the construction really is degenerate
 }
 
+// The first stage decides in plain doubles with an error bound from the permanent; these
+// inputs sit where such a bound is tight or fails: determinants a few ulps of the
+// permanent from zero, products that underflow beside ones that do not, magnitudes near
+// overflow, and the ends of the range the exact stage takes without GMP. Every sign
+// against rationals.
+TEST(ExactPredicates, NearlyDegenerateAndExtremeMagnitudesMatchRationalReference) {
+  std::mt19937_64 rng(20261130);
+  std::uniform_int_distribution<int> small(-9, 9), ulps(-3, 3);
+  auto vec = [&](int lo, int hi) {
+    std::uniform_int_distribution<int> expo(lo, hi);
+    return Point3{std::ldexp(small(rng), expo(rng)), std::ldexp(small(rng), expo(rng)),
+                  std::ldexp(small(rng), expo(rng))};
+  };
+  auto nudge = [&](double x) {
+    for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) x = std::nextafter(x, k > 0 ? 1e308 : -1e308);
+    return x;
+  };
+  const Point3 o{0, 0, 0};
+  int decided_near_zero = 0;
+  for (int iter = 0; iter < 40000; ++iter) {
+    SCOPED_TRACE("iteration " + std::to_string(iter));
+    Point3 a, b, c;
+    switch (iter % 5) {
+      case 0: {  // c = s a + t b in doubles, then a few ulps off: |det| ~ ulps of the permanent
+        a = vec(-20, 20), b = vec(-20, 20);
+        const double s = small(rng) * 0.37, t = small(rng) * 1.91;
+        c = {nudge(s * a.x + t * b.x), nudge(s * a.y + t * b.y), nudge(s * a.z + t * b.z)};
+        break;
+      }
+      case 1:  // outer factors large, inner products underflowing or subnormal
+        a = vec(150, 250), b = vec(-700, -480), c = vec(-700, -480);
+        break;
+      case 2:  // subnormal coordinates
+        a = vec(-1074, -1000), b = vec(-1074, -1000), c = vec(-60, 60);
+        break;
+      case 3: {  // the ends of the range the expansion stage takes, a few ulps off degenerate
+        a = vec(-200, -190), b = vec(190, 199);
+        const double s = std::ldexp(small(rng), 200), t = std::ldexp(small(rng), -200);
+        c = {nudge(s * a.x + t * b.x), nudge(s * a.y + t * b.y), nudge(s * a.z + t * b.z)};
+        break;
+      }
+      default:  // near overflow: the permanent is not finite or beyond 2^1000
+        a = vec(300, 340), b = vec(300, 340), c = vec(300, 345);
+        break;
+    }
+    const Sign got = det_diff(o, a, o, b, o, c);
+    ASSERT_EQ(got, reference_det_diff(o, a, o, b, o, c));
+    decided_near_zero += iter % 5 == 0 && got != Sign::kZero;
+    for (int drop = 0; drop < 3; ++drop) {
+      const Point3 e{drop == 0 ? 1.0 : 0.0, drop == 1 ? 1.0 : 0.0, drop == 2 ? 1.0 : 0.0};
+      ASSERT_EQ(orient2d(o, a, b, drop), reference_det_diff(o, a, o, b, o, e)) << "drop " << drop;
+    }
+  }
+  EXPECT_GT(decided_near_zero, 3000);
+}
+
 TEST(ExactPredicates, AxisAlignedPlanesMatchRationalReference) {
   // orient3d and orient2d decide planes normal to an axis, and triangles sharing a
   // coordinate, without their exact stage: every sign against rationals, including

@@ -1,9 +1,13 @@
 #include "exact/predicates.h"
 
 #include <array>
+#include <cmath>
+#include <initializer_list>
+#include <optional>
 
 #include "exact/approx.h"
 #include "exact/dyadic.h"
+#include "exact/expansion.h"
 #include "exact/filtered.h"
 
 namespace gvm::exact {
@@ -30,6 +34,91 @@ T coord(const V<T>& v, int i) {
   return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
+// The first and cheapest stage for determinants of differences of input doubles, before
+// the Approx filter (which tracks an error per operation, several times the cost): plain
+// doubles and one error bound from the permanent, as in Shewchuk's orient3d and orient2d
+// ("Adaptive precision floating-point arithmetic and fast robust geometric predicates",
+// 1997, Sec. 4.3). Evaluated in doubles from the rounded differences, the 3x3 determinant
+// is within (7 + 56u) u P of the exact one, P its computed permanent, u = 2^-53, and the
+// 2x2 one within (3 + 16u) u P, as long as nothing underflows or overflows. We take 8u
+// and 4u: the slack covers the rounding of the bound itself. A product that underflows
+// is off by 2^-1075 at most (subnormal sums and differences are exact); after the outer
+// products, (|a.x| + |a.y| + |a.z| + 1) 2^-1069 covers those. An overflow makes the
+// permanent, hence the bound, infinite or not a number: no sign is decided then.
+std::optional<Sign> decided(double det, double bound) {
+  if (det > bound) return Sign::kPositive;
+  if (det < -bound) return Sign::kNegative;
+  return std::nullopt;
+}
+
+std::optional<Sign> static_det3(const V<double>& a, const V<double>& b, const V<double>& c) {
+  const double yz = b.y * c.z, zy = b.z * c.y, xz = b.x * c.z, zx = b.z * c.x, xy = b.x * c.y,
+               yx = b.y * c.x;
+  const double det = a.x * (yz - zy) - a.y * (xz - zx) + a.z * (xy - yx);
+  const double ax = std::fabs(a.x), ay = std::fabs(a.y), az = std::fabs(a.z);
+  const double permanent = ax * (std::fabs(yz) + std::fabs(zy)) + ay * (std::fabs(xz) + std::fabs(zx)) +
+                           az * (std::fabs(xy) + std::fabs(yx));
+  return decided(det, 0x1p-50 * permanent + (ax + ay + az + 1) * 0x1p-1069);
+}
+
+std::optional<Sign> static_det2(double ux, double uy, double vx, double vy) {
+  const double left = ux * vy, right = uy * vx;
+  const double permanent = std::fabs(left) + std::fabs(right);
+  return decided(left - right, 0x1p-51 * permanent + 0x1p-1070);
+}
+
+// Coordinates for which the expansion stage is exact: zero, or between 2^-200 and 2^200
+// in magnitude. Each is then a multiple of 2^-252 (its ulp), so every value the stage
+// forms, a product of at most three differences or a part of one, is zero or a multiple
+// of 2^-756 below 2^610: nothing underflows and nothing overflows.
+bool expansion_exact(const Point3& p) {
+  for (int i = 0; i < 3; ++i) {
+    const double a = std::fabs(p[i]);
+    if (a != 0 && !(a >= 0x1p-200 && a <= 0x1p200)) return false;
+  }
+  return true;
+}
+
+// The exact stage: expansions in that range, GMP beyond it (coordinates of 1e-300 and
+// 1e300 are valid input, only rare).
+template <class Filtered, class Expanded>
+Sign exact_stage(std::initializer_list<Point3> points, const Filtered& filtered, const Expanded& expanded) {
+  if (auto s = filtered(Approx{}).sign()) return *s;
+  for (const Point3& p : points) {
+    if (!expansion_exact(p)) return filtered(Dyadic{}).sign();
+  }
+  return expanded();
+}
+
+// det(a1 - a0, b1 - b0, c1 - c0): the static stage, the filter, then exactly.
+Sign det3_of_differences(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1,
+                         const Point3& c0, const Point3& c1) {
+  if (auto s = static_det3(diff<double>(a1, a0), diff<double>(b1, b0), diff<double>(c1, c0))) return *s;
+  auto filtered = [&](auto tag) {
+    using T = decltype(tag);
+    return det3(diff<T>(a1, a0), diff<T>(b1, b0), diff<T>(c1, c0));
+  };
+  return exact_stage({a0, a1, b0, b1, c0, c1}, filtered, [&] {
+    Expansion<2> a[3], b[3], c[3];
+    for (int i = 0; i < 3; ++i) {
+      a[i] = difference(a1[i], a0[i]);
+      b[i] = difference(b1[i], b0[i]);
+      c[i] = difference(c1[i], c0[i]);
+    }
+    auto minor = [&](int i, int j) {  // b_i c_j - b_j c_i
+      Expansion<16> m;
+      m.add(b[i] * c[j]);
+      m.add(b[j] * c[i], -1);
+      return m;
+    };
+    Expansion<192> det;
+    det.add(a[0] * minor(1, 2));
+    det.add(a[1] * minor(0, 2), -1);
+    det.add(a[2] * minor(0, 1));
+    return det.sign();
+  });
+}
+
 }  // namespace
 
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
@@ -43,18 +132,12 @@ Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d
       return height == Sign::kZero ? Sign::kZero : height * orient2d(a, b, c, axis);
     }
   }
-  return filtered_sign([&](auto tag) {
-    using T = decltype(tag);
-    return det3(diff<T>(b, a), diff<T>(c, a), diff<T>(d, a));
-  });
+  return det3_of_differences(a, b, a, c, a, d);
 }
 
 Sign det_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1,
               const Point3& c0, const Point3& c1) {
-  return filtered_sign([&](auto tag) {
-    using T = decltype(tag);
-    return det3(diff<T>(a1, a0), diff<T>(b1, b0), diff<T>(c1, c0));
-  });
+  return det3_of_differences(a0, a1, b0, b1, c0, c1);
 }
 
 Sign dot_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1) {
@@ -71,11 +154,18 @@ Sign orient2d(const Point3& a, const Point3& b, const Point3& c, int drop) {
   // Both products vanish when a, b, c share a coordinate (the normal of an axis-aligned
   // plane has zero components): zero, without the exact stage the filter would need.
   if ((a[i] == b[i] && a[i] == c[i]) || (a[j] == b[j] && a[j] == c[j])) return Sign::kZero;
-  return filtered_sign([&](auto tag) {
+  if (auto s = static_det2(b[i] - a[i], b[j] - a[j], c[i] - a[i], c[j] - a[j])) return *s;
+  auto filtered = [&](auto tag) {
     using T = decltype(tag);
     auto u = diff<T>(b, a);
     auto v = diff<T>(c, a);
     return coord(u, i) * coord(v, j) - coord(u, j) * coord(v, i);
+  };
+  return exact_stage({a, b, c}, filtered, [&] {
+    Expansion<16> det;
+    det.add(difference(b[i], a[i]) * difference(c[j], a[j]));
+    det.add(difference(b[j], a[j]) * difference(c[i], a[i]), -1);
+    return det.sign();
   });
 }
 
