@@ -2,7 +2,15 @@
 
 #include <cmath>
 
+#include "exact/block_cache.h"
+
 namespace gvm::exact {
+namespace {
+
+// Before any exact evaluation: every GMP number of the engine is made and freed by Dyadic.
+const bool kGmpUsesBlockCache = (use_block_cache_for_gmp(), true);
+
+}  // namespace
 
 Dyadic::Dyadic(double d) {
   if (d == 0) return;
@@ -14,17 +22,26 @@ Dyadic::Dyadic(double d) {
   k_ = static_cast<int64_t>(exp) - 53;
 }
 
+// The sum or difference written straight into out_m: the operand with the larger exponent
+// shifted left there, then the other added in place (one allocation, not three).
 static void align_add(const mpz_class& am, int64_t ak, const mpz_class& bm, int64_t bk,
-                        bool subtract, mpz_class& out_m, int64_t& out_k) {
-  // Shift the operand with the larger exponent left so both share the smaller one.
-  mpz_class shifted;
+                      bool subtract, mpz_class& out_m, int64_t& out_k) {
+  mpz_ptr out = out_m.get_mpz_t();
   if (ak <= bk) {
-    mpz_mul_2exp(shifted.get_mpz_t(), bm.get_mpz_t(), static_cast<mp_bitcnt_t>(bk - ak));
-    out_m = subtract ? mpz_class(am - shifted) : mpz_class(am + shifted);
+    mpz_mul_2exp(out, bm.get_mpz_t(), static_cast<mp_bitcnt_t>(bk - ak));
+    if (subtract) {
+      mpz_sub(out, am.get_mpz_t(), out);
+    } else {
+      mpz_add(out, am.get_mpz_t(), out);
+    }
     out_k = ak;
   } else {
-    mpz_mul_2exp(shifted.get_mpz_t(), am.get_mpz_t(), static_cast<mp_bitcnt_t>(ak - bk));
-    out_m = subtract ? mpz_class(shifted - bm) : mpz_class(shifted + bm);
+    mpz_mul_2exp(out, am.get_mpz_t(), static_cast<mp_bitcnt_t>(ak - bk));
+    if (subtract) {
+      mpz_sub(out, out, bm.get_mpz_t());
+    } else {
+      mpz_add(out, out, bm.get_mpz_t());
+    }
     out_k = bk;
   }
 }

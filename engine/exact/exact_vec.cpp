@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "exact/approx.h"
+#include "exact/block_cache.h"
 #include "exact/dyadic.h"
 #include "exact/filtered.h"
 
@@ -93,6 +94,10 @@ const ExactVec::Node& zero_node() {
 
 const ExactVec::Node& node_of(const ExactVec& v) { return v.node() ? *v.node() : zero_node(); }
 
+std::shared_ptr<ExactVec::Node> new_node() {
+  return std::allocate_shared<ExactVec::Node>(CachedAllocator<ExactVec::Node>{});
+}
+
 template <class T>
 decltype(auto) eval(const ExactVec& v) {
   return node_of(v).eval<T>();
@@ -125,7 +130,7 @@ bool orthogonal_by_construction(const ExactVec& a, const ExactVec& b) {
 }  // namespace
 
 ExactVec ExactVec::from_point(const Point3& p) {
-  auto n = std::make_shared<Node>();
+  auto n = new_node();
   n->op = Op::kLeaf;
   n->leaf = p;
   n->approx = {Approx(p.x), Approx(p.y), Approx(p.z)};
@@ -133,7 +138,7 @@ ExactVec ExactVec::from_point(const Point3& p) {
 }
 
 ExactVec operator+(const ExactVec& a, const ExactVec& b) {
-  auto n = std::make_shared<ExactVec::Node>();
+  auto n = new_node();
   n->op = Op::kAdd;
   n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
   n->b = b.node_ ? b.node_ : ExactVec::from_point({}).node_;
@@ -142,7 +147,7 @@ ExactVec operator+(const ExactVec& a, const ExactVec& b) {
 }
 
 ExactVec operator-(const ExactVec& a, const ExactVec& b) {
-  auto n = std::make_shared<ExactVec::Node>();
+  auto n = new_node();
   n->op = Op::kSub;
   n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
   n->b = b.node_ ? b.node_ : ExactVec::from_point({}).node_;
@@ -151,7 +156,7 @@ ExactVec operator-(const ExactVec& a, const ExactVec& b) {
 }
 
 ExactVec operator-(const ExactVec& a) {
-  auto n = std::make_shared<ExactVec::Node>();
+  auto n = new_node();
   n->op = Op::kNeg;
   n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
   for (int i = 0; i < 3; ++i) n->approx[i] = -n->a->approx[i];
@@ -159,7 +164,7 @@ ExactVec operator-(const ExactVec& a) {
 }
 
 ExactVec cross(const ExactVec& a, const ExactVec& b) {
-  auto n = std::make_shared<ExactVec::Node>();
+  auto n = new_node();
   n->op = Op::kCross;
   n->a = a.node_ ? a.node_ : ExactVec::from_point({}).node_;
   n->b = b.node_ ? b.node_ : ExactVec::from_point({}).node_;
