@@ -6,7 +6,7 @@ packages=(
   libtbb-dev libopenmesh-dev libspdlog-dev
   libprotobuf-dev protobuf-compiler
   libgtest-dev libgmock-dev libbenchmark-dev
-  libgmp-dev
+  libgmp-dev libabsl-dev
   coinor-libcbc-dev
   libgrpc++-dev protobuf-compiler-grpc grpc-proto libssl-dev libcli11-dev
   python3-grpcio python3-protobuf

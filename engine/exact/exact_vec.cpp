@@ -5,7 +5,9 @@
 #include <cfloat>
 #include <climits>
 #include <cmath>
+#include <new>
 #include <type_traits>
+#include <utility>
 
 #include "exact/approx.h"
 #include "exact/block_cache.h"
@@ -25,6 +27,13 @@ V3<T> cross3(const V3<T>& a, const V3<T>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
+// The cached exact value lives in a block of the per-thread caches, as nodes do.
+void release_exact(const V3<Dyadic>* v) {
+  if (!v) return;
+  v->~V3<Dyadic>();
+  cached_free(const_cast<V3<Dyadic>*>(v), sizeof(V3<Dyadic>));
+}
+
 }  // namespace
 
 struct ExactVec::Node {
@@ -39,7 +48,7 @@ struct ExactVec::Node {
   Node() = default;
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
-  ~Node() { delete exact.load(std::memory_order_relaxed); }
+  ~Node() { release_exact(exact.load(std::memory_order_relaxed)); }
 
   // The filtered value by copy, the exact one by reference to the cache.
   template <class T>
@@ -78,10 +87,13 @@ V3<Dyadic> ExactVec::Node::compute_exact() const {
 
 const V3<Dyadic>& ExactVec::Node::exact_value() const {
   if (const V3<Dyadic>* cached = exact.load(std::memory_order_acquire)) return *cached;
-  auto* fresh = new V3<Dyadic>(compute_exact());
+  V3<Dyadic> value = compute_exact();
+  void* block = cached_allocate(sizeof(V3<Dyadic>));
+  if (!block) throw std::bad_alloc();
+  auto* fresh = new (block) V3<Dyadic>(std::move(value));
   const V3<Dyadic>* expected = nullptr;
   if (exact.compare_exchange_strong(expected, fresh, std::memory_order_acq_rel)) return *fresh;
-  delete fresh;  // another thread cached the same value first
+  release_exact(fresh);  // another thread cached the same value first
   return *expected;
 }
 

@@ -7,7 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_map>
+
+#include <absl/container/flat_hash_map.h>
 
 namespace gvm::sphere {
 namespace {
@@ -165,16 +166,21 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     if (!exact::same_direction(a.from, a.to)) arcs.push_back(&a);
   }
 
-  // Point occurrences: arc endpoints, split points, input points, the reference.
+  // Point occurrences: arc endpoints, split points, input points, the reference. Which
+  // arc each lies on is one flat list of (arc, occurrence), grouped by arc below: a vector
+  // per arc cost two or three allocations per arc of every arrangement.
   std::vector<ExactVec> occ;
-  std::vector<std::vector<uint32_t>> on_arc(arcs.size());  // occurrences on each arc
+  std::vector<std::pair<uint32_t, uint32_t>> on_arc;
   auto add_occ = [&](const ExactVec& p) {
     occ.push_back(p);
     return static_cast<uint32_t>(occ.size() - 1);
   };
+  auto add_on = [&](size_t arc, uint32_t k) { on_arc.push_back({static_cast<uint32_t>(arc), k}); };
+  occ.reserve(2 * arcs.size() + points.size() + 1);
+  on_arc.reserve(2 * arcs.size());
   for (size_t i = 0; i < arcs.size(); ++i) {
-    on_arc[i].push_back(add_occ(arcs[i]->from));
-    on_arc[i].push_back(add_occ(arcs[i]->to));
+    add_on(i, add_occ(arcs[i]->from));
+    add_on(i, add_occ(arcs[i]->to));
   }
   std::vector<uint32_t> point_occ;
   for (const ArrangementPoint& p : points) point_occ.push_back(add_occ(p.p));
@@ -196,10 +202,10 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     const ArrangementArc& B = *arcs[j];
     if (exact::parallel(A.normal, B.normal)) {
       // Same great circle: endpoints of one strictly inside the other split it.
-      if (strictly_inside(A, B.from)) on_arc[i].push_back(add_occ(B.from));
-      if (strictly_inside(A, B.to)) on_arc[i].push_back(add_occ(B.to));
-      if (strictly_inside(B, A.from)) on_arc[j].push_back(add_occ(A.from));
-      if (strictly_inside(B, A.to)) on_arc[j].push_back(add_occ(A.to));
+      if (strictly_inside(A, B.from)) add_on(i, add_occ(B.from));
+      if (strictly_inside(A, B.to)) add_on(i, add_occ(B.to));
+      if (strictly_inside(B, A.from)) add_on(j, add_occ(A.from));
+      if (strictly_inside(B, A.to)) add_on(j, add_occ(A.to));
       continue;
     }
     const Sign af = exact::sign_dot(A.from, B.normal), at = exact::sign_dot(A.to, B.normal);
@@ -211,16 +217,16 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
       if (af == -bf) {
         ExactVec x = af == Sign::kPositive ? exact::cross(A.normal, B.normal)
                                            : exact::cross(B.normal, A.normal);
-        on_arc[i].push_back(add_occ(x));
-        on_arc[j].push_back(add_occ(x));
+        add_on(i, add_occ(x));
+        add_on(j, add_occ(x));
       }
       continue;
     }
     // An endpoint of one arc on the other's circle is the only meeting point there.
-    if (af == Sign::kZero && strictly_inside(B, A.from)) on_arc[j].push_back(add_occ(A.from));
-    if (at == Sign::kZero && strictly_inside(B, A.to)) on_arc[j].push_back(add_occ(A.to));
-    if (bf == Sign::kZero && strictly_inside(A, B.from)) on_arc[i].push_back(add_occ(B.from));
-    if (bt == Sign::kZero && strictly_inside(A, B.to)) on_arc[i].push_back(add_occ(B.to));
+    if (af == Sign::kZero && strictly_inside(B, A.from)) add_on(j, add_occ(A.from));
+    if (at == Sign::kZero && strictly_inside(B, A.to)) add_on(j, add_occ(A.to));
+    if (bf == Sign::kZero && strictly_inside(A, B.from)) add_on(i, add_occ(B.from));
+    if (bt == Sign::kZero && strictly_inside(A, B.to)) add_on(i, add_occ(B.to));
   }
   // Input points (and the reference) lying inside arcs split them.
   for (size_t k = 0; k <= points.size(); ++k) {
@@ -229,7 +235,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     Box b = point_box(exact::unit_estimate(p));
     for (uint32_t i : tree.overlapping(b)) {
       if (exact::sign_dot(p, arcs[i]->normal) == Sign::kZero && strictly_inside(*arcs[i], p)) {
-        on_arc[i].push_back(k < points.size() ? point_occ[k] : reference_occ);
+        add_on(i, k < points.size() ? point_occ[k] : reference_occ);
       }
     }
   }
@@ -238,7 +244,8 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   // that meet share their endpoint's node, often dozens of times); the distinct nodes
   // are compared exactly when their boxes overlap.
   UnionFind same(occ.size());
-  std::unordered_map<const void*, uint32_t> first_of_node;
+  absl::flat_hash_map<const void*, uint32_t> first_of_node;
+  first_of_node.reserve(occ.size());
   std::vector<uint32_t> distinct;
   for (uint32_t k = 0; k < occ.size(); ++k) {
     auto [it, inserted] = first_of_node.try_emplace(occ[k].node(), k);
@@ -273,13 +280,24 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   }
   reference_vertex_ = vertex_of[reference_occ];
 
+  // The occurrences of each arc together, in the order found (its endpoints first).
+  std::vector<uint32_t> on_begin(arcs.size() + 1, 0), on_arc_occ(on_arc.size());
+  for (auto [i, k] : on_arc) ++on_begin[i + 1];
+  for (size_t i = 0; i < arcs.size(); ++i) on_begin[i + 1] += on_begin[i];
+  {
+    std::vector<uint32_t> fill(on_begin.begin(), on_begin.end() - 1);
+    for (auto [i, k] : on_arc) on_arc_occ[fill[i]++] = k;
+  }
+
   // Split every arc at its vertices, in order along it, and merge coinciding pieces.
-  std::unordered_map<uint64_t, uint32_t> edge_index;
+  absl::flat_hash_map<uint64_t, uint32_t> edge_index;
+  edge_index.reserve(on_arc.size());
+  std::vector<uint32_t> vs;
   for (size_t i = 0; i < arcs.size(); ++i) {
     interruptions.tick();
     const ArrangementArc& arc = *arcs[i];
-    std::vector<uint32_t> vs;
-    for (uint32_t k : on_arc[i]) vs.push_back(vertex_of[k]);
+    vs.clear();
+    for (uint32_t n = on_begin[i]; n < on_begin[i + 1]; ++n) vs.push_back(vertex_of[on_arc_occ[n]]);
     const uint32_t first = vs[0], last = vs[1];
     std::sort(vs.begin(), vs.end());
     vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
