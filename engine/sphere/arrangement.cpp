@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
+#include <utility>
+#include <vector>
 
 #include <absl/container/flat_hash_map.h>
 
@@ -53,6 +56,25 @@ CandidatePairs candidate_pairs(size_t n, const BoxOf& box_of) {
   out.pairs = out.tree.overlapping_pairs();
   return out;
 }
+
+// (arc, occurrence) pairs grouped by arc, each arc's in the order they were found (its
+// endpoints first): a counting sort.
+class OccurrencesByArc {
+ public:
+  OccurrencesByArc(std::span<const std::pair<uint32_t, uint32_t>> on_arc, size_t arcs)
+      : begin_(arcs + 1, 0), occ_(on_arc.size()) {
+    for (auto [i, k] : on_arc) ++begin_[i + 1];
+    for (size_t i = 0; i < arcs; ++i) begin_[i + 1] += begin_[i];
+    std::vector<uint32_t> fill(begin_.begin(), begin_.end() - 1);
+    for (auto [i, k] : on_arc) occ_[fill[i]++] = k;
+  }
+  std::span<const uint32_t> of(size_t arc) const {
+    return std::span<const uint32_t>(occ_).subspan(begin_[arc], begin_[arc + 1] - begin_[arc]);
+  }
+
+ private:
+  std::vector<uint32_t> begin_, occ_;
+};
 
 }  // namespace
 
@@ -280,14 +302,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   }
   reference_vertex_ = vertex_of[reference_occ];
 
-  // The occurrences of each arc together, in the order found (its endpoints first).
-  std::vector<uint32_t> on_begin(arcs.size() + 1, 0), on_arc_occ(on_arc.size());
-  for (auto [i, k] : on_arc) ++on_begin[i + 1];
-  for (size_t i = 0; i < arcs.size(); ++i) on_begin[i + 1] += on_begin[i];
-  {
-    std::vector<uint32_t> fill(on_begin.begin(), on_begin.end() - 1);
-    for (auto [i, k] : on_arc) on_arc_occ[fill[i]++] = k;
-  }
+  const OccurrencesByArc by_arc(on_arc, arcs.size());
 
   // Split every arc at its vertices, in order along it, and merge coinciding pieces.
   absl::flat_hash_map<uint64_t, uint32_t> edge_index;
@@ -297,7 +312,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     interruptions.tick();
     const ArrangementArc& arc = *arcs[i];
     vs.clear();
-    for (uint32_t n = on_begin[i]; n < on_begin[i + 1]; ++n) vs.push_back(vertex_of[on_arc_occ[n]]);
+    for (uint32_t k : by_arc.of(i)) vs.push_back(vertex_of[k]);
     const uint32_t first = vs[0], last = vs[1];
     std::sort(vs.begin(), vs.end());
     vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
