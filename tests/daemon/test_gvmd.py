@@ -184,7 +184,10 @@ class CancellationFreesTheCores(unittest.TestCase):
         client = subprocess.Popen(["/usr/bin/python3", CLIENT, "plan", part_path(LONG_PART), "--server",
                                    self.daemon.address], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         time.sleep(4)
-        self.assertGreater(self.daemon.cpu_use(0.5), 0.5, "the daemon works on the request")
+        # Busy before the kill; other tests running beside this one (ctest -j2) can take a
+        # core for a moment, so the daemon gets up to five half-second windows to show it.
+        busiest = max(self.daemon.cpu_use(0.5) for _ in range(5))
+        self.assertGreater(busiest, 0.5, "the daemon works on the request")
         client.kill()
         client.wait()
         self.assert_idle_soon()
