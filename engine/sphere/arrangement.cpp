@@ -303,6 +303,7 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
   reference_vertex_ = vertex_of[reference_occ];
 
   const OccurrencesByArc by_arc(on_arc, arcs.size());
+  std::vector<std::pair<uint32_t, uint32_t>>().swap(on_arc);  // the grouped copy is what is used
 
   // Split every arc at its vertices, in order along it, and merge coinciding pieces.
   absl::flat_hash_map<uint64_t, uint32_t> edge_index;
