@@ -31,7 +31,7 @@ V3<T> cross3(const V3<T>& a, const V3<T>& b) {
 void release_exact(const V3<Dyadic>* v) {
   if (!v) return;
   v->~V3<Dyadic>();
-  cached_free(const_cast<V3<Dyadic>*>(v), sizeof(V3<Dyadic>));
+  CachedAllocator<V3<Dyadic>>().deallocate(const_cast<V3<Dyadic>*>(v), 1);
 }
 
 }  // namespace
@@ -88,9 +88,7 @@ V3<Dyadic> ExactVec::Node::compute_exact() const {
 const V3<Dyadic>& ExactVec::Node::exact_value() const {
   if (const V3<Dyadic>* cached = exact.load(std::memory_order_acquire)) return *cached;
   V3<Dyadic> value = compute_exact();
-  void* block = cached_allocate(sizeof(V3<Dyadic>));
-  if (!block) throw std::bad_alloc();
-  auto* fresh = new (block) V3<Dyadic>(std::move(value));
+  auto* fresh = new (CachedAllocator<V3<Dyadic>>().allocate(1)) V3<Dyadic>(std::move(value));
   const V3<Dyadic>* expected = nullptr;
   if (exact.compare_exchange_strong(expected, fresh, std::memory_order_acq_rel)) return *fresh;
   release_exact(fresh);  // another thread cached the same value first

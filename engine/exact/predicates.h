@@ -1,6 +1,8 @@
 // Every geometric decision of the engine is one of these predicates. Each is exact for
 // double input: a floating-point filter with a certified error bound decides almost all
-// calls, and an exact dyadic (GMP) evaluation decides the rest. A zero result is reported
+// calls, and an exact dyadic (GMP) evaluation decides the rest (the determinants of input
+// differences take a static bound before the filter and floating-point expansions before
+// GMP; see predicates.cpp). A zero result is reported
 // as zero: degenerate input (coplanar faces, parallel walls) is answered, never perturbed.
 // Nothing outside the exact module compares a floating-point value with an epsilon.
 #pragma once
