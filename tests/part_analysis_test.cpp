@@ -3,13 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <fstream>
 #include <random>
 #include <set>
 
 #include "exact/predicates.h"
 #include "gvm/part.h"
+#include "support/scratch_dir.h"
 #include "support/test_parts.h"
 
 namespace gvm {
@@ -570,15 +570,12 @@ TEST(PartPotential, MatchesBruteForceOnLargePlanarFacesAndRegions) {
 
 class PartFaceGroups : public ::testing::Test {
  protected:
+  // In this process's own directory: ctest runs the tests of this fixture side by side in
+  // separate processes, and a shared /tmp name let one test read the other's half-written file.
   std::string write(const std::string& text) {
-    std::string path = ::testing::TempDir() + "part_face_groups_" +
-                       std::to_string(counter_++) + ".json";
+    auto path = test::scratch_dir() / ("face_groups_" + std::to_string(counter_++) + ".json");
     std::ofstream(path) << text;
-    paths_.push_back(path);
-    return path;
-  }
-  ~PartFaceGroups() override {
-    for (const auto& p : paths_) std::remove(p.c_str());
+    return path.string();
   }
   std::string error(const std::string& text, uint32_t faces = 10) {
     auto r = read_face_groups(write(text), faces);
@@ -586,7 +583,6 @@ class PartFaceGroups : public ::testing::Test {
     return r.ok() ? std::string() : r.status().message();
   }
   int counter_ = 0;
-  std::vector<std::string> paths_;
 };
 
 TEST_F(PartFaceGroups, ReadsValidFile) {
