@@ -1,6 +1,7 @@
 // The exact arrangement and its non-regularized cell selection.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sphere/arrangement.h"
@@ -102,6 +103,58 @@ TEST(SphereArrangement, CollinearEdgesAndAHoleAndSeparateComponents) {
       [&](uint32_t f) { return arr.coverage(f, 0) < 0; }, [](uint32_t) { return false; },
       [](uint32_t) { return false; });
   EXPECT_EQ(negative.faces().size(), 1u);
+}
+
+// Components far apart are joined by bridges between near ones: 48 small squares on a
+// ring around +z, each bridged to a neighbour, and only one bridge down to a square
+// around -z -- listed first, so the component of vertex 0, to which every other one used
+// to be bridged, across the sphere (TR12J F234: 8.5 M candidate pairs where 1.3 M do).
+// The coverage stays right whichever bridges are chosen.
+TEST(SphereArrangement, BridgesJoinNearComponents) {
+  std::vector<ArrangementArc> arcs;
+  add_polygon(arcs, {v(1, -1, -8), v(-1, -1, -8), v(-1, 1, -8), v(1, 1, -8)}, 0);  // CCW seen from -z
+  double squares_area = convex_polygon({v(1, -1, -8), v(-1, -1, -8), v(-1, 1, -8), v(1, 1, -8)}).area();
+  constexpr int kRing = 48;
+  for (int k = 0; k < kRing; ++k) {
+    const double angle = 2 * M_PI * k / kRing;
+    const double x = std::round(6 * std::cos(angle) * 64) / 64, y = std::round(6 * std::sin(angle) * 64) / 64;
+    const auto sq = square(x - 0.125, y - 0.125, x + 0.125, y + 0.125);
+    add_polygon(arcs, sq, 0);
+    squares_area += convex_polygon(sq).area();
+  }
+  const int ref[] = {0};
+  const Arrangement arr(arcs, {}, 1, v(-3, 5, 17), ref);  // inside the ring, on no arc
+  double bridges = 0, longest = 0;
+  for (uint32_t e = 0; e < arr.edges().size(); ++e) {
+    if (!arr.is_bridge(e)) continue;
+    const auto a = arr.vertices()[arr.edges()[e].v0].p.unit(), b = arr.vertices()[arr.edges()[e].v1].p.unit();
+    const double angle = std::acos(std::clamp(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], -1.0, 1.0));
+    bridges += angle;
+    longest = std::max(longest, angle);
+  }
+  // The ring's squares are about 5 degrees apart, the ring 37 degrees from +z and 143
+  // from the square around -z: one bridge down, the rest along the ring and to the
+  // reference. All to one component would be 48 bridges of 140 degrees or more.
+  EXPECT_LT(bridges, 2 * M_PI);
+  EXPECT_GT(longest, 2.0);  // the one bridge down to -z
+  EXPECT_NEAR(at_least(arr, 1).area(), squares_area, 1e-12);
+  EXPECT_EQ(at_least(arr, 1).faces().size(), size_t(kRing + 1));
+}
+
+// Many nodes of one direction (unions leave hundreds of constructions of one vertex) are
+// one vertex, found with one exact comparison each against the direction's first node,
+// not with all m^2 / 2 pairs of their overlapping boxes.
+TEST(SphereArrangement, ManyNodesOfOneDirectionAreOneVertex) {
+  std::vector<ArrangementArc> arcs;
+  add_polygon(arcs, square(-1, -1, 1, 1), 0);
+  std::vector<ArrangementPoint> points;
+  constexpr int kNodes = 400;
+  for (int k = 1; k <= kNodes; ++k) points.push_back({v(3.0 * k, 5.0 * k, 7.0 * k), 0});
+  points.push_back({exact::cross(v(0, 7, -5), v(7, 0, -3)), 0});  // (-21, -35, -49): the opposite
+  const Arrangement arr(arcs, points, v(-3, 5, 17));
+  // The square's 4 corners, the direction, its opposite, the reference.
+  EXPECT_EQ(arr.vertices().size(), 7u);
+  EXPECT_LT(arr.compared_pairs(), uint64_t{4 * kNodes});
 }
 
 // Non-regularized difference: an arc L (layer 1) through two open occluders (layer 0) that

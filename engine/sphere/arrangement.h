@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "exact/exact_vec.h"
@@ -95,8 +96,8 @@ class Arrangement {
   }
   bool vertex_has_point(uint32_t v, int k) const;
 
-  // Pairs of arcs, and of vertices, whose boxes overlapped and which were then compared
-  // exactly (over the builds, bridges included): a measure of the work.
+  // Pairs of arcs whose boxes overlapped, and of a vertex and a representative of a
+  // direction, compared exactly (over the builds, bridges included): a measure of the work.
   uint64_t compared_pairs() const { return compared_pairs_; }
 
   // The vertex at the reference direction, and the face around it.
@@ -129,6 +130,8 @@ class Arrangement {
   };
   void build_with_bridges(std::span<const ArrangementArc> arcs,
                           std::span<const ArrangementPoint> points, const exact::ExactVec& reference);
+  // Pairs of vertices whose bridges join every component of the arc graph.
+  std::vector<std::pair<uint32_t, uint32_t>> bridges() const;
   Recorded build(std::span<const ArrangementArc> arcs, std::span<const ArrangementPoint> points,
                  const exact::ExactVec& reference);
   void index_layers(Recorded recorded);

@@ -188,6 +188,12 @@ std::vector<std::pair<uint32_t, uint32_t>> BoxTree::overlapping_pairs(size_t lim
   return out;
 }
 
+bool BoxTree::overlapping_pairs_exceed(size_t limit) const {
+  Pairs out;
+  if (!nodes_.empty()) pairs_within(0, out, limit);
+  return out.size() > limit;
+}
+
 std::vector<uint32_t> BoxTree::overlapping(const Box& query) const {
   std::vector<uint32_t> out;
   if (nodes_.empty()) return out;

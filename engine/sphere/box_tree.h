@@ -36,8 +36,14 @@ class BoxTree {
   // Every pair (i, j), i < j, of overlapping boxes, sorted; or, when there are more than
   // `limit`, some more than `limit` of them, unsorted.
   std::vector<std::pair<uint32_t, uint32_t>> overlapping_pairs(size_t limit = SIZE_MAX) const;
+  // Whether more than `limit` pairs of boxes overlap (found without sorting them).
+  bool overlapping_pairs_exceed(size_t limit) const;
   // Indices of the boxes that overlap `query`, sorted.
   std::vector<uint32_t> overlapping(const Box& query) const;
+  // Calls visit(i) for the boxes i that overlap `query`, in no set order, until it returns
+  // true; returns whether it did.
+  template <class Visit>
+  bool visit_overlapping(const Box& query, const Visit& visit) const;
 
  private:
   struct Node {
@@ -60,6 +66,27 @@ inline bool overlap(const Box& a, const Box& b) {
     if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
   }
   return true;
+}
+
+template <class Visit>
+bool BoxTree::visit_overlapping(const Box& query, const Visit& visit) const {
+  if (nodes_.empty()) return false;
+  uint32_t stack[128];  // the tree is balanced: depth about log2(n)
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[stack[--top]];
+    if (!overlap(n.box, query)) continue;
+    if (n.left == 0) {
+      for (uint32_t k = n.begin; k < n.end; ++k) {
+        if (overlap(boxes_[order_[k]], query) && visit(order_[k])) return true;
+      }
+    } else {
+      stack[top++] = n.left;
+      stack[top++] = n.right;
+    }
+  }
+  return false;
 }
 
 }  // namespace gvm::sphere

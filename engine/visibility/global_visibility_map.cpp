@@ -335,8 +335,8 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
 
   const auto start = std::chrono::steady_clock::now();
   Arrangement arr(arcs, points, 2, r, coverage);
-  spdlog::debug("global occlusion: arrangement of {} arcs: {} vertices, {} edges, {:.2f} s", arcs.size(),
-                arr.vertices().size(), arr.edges().size(),
+  spdlog::debug("global occlusion: arrangement of {} arcs: {} vertices, {} edges, {} pairs, {:.2f} s", arcs.size(),
+                arr.vertices().size(), arr.edges().size(), arr.compared_pairs(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   const auto& half = arr.half_edges();
   auto in_lvm_face = [&](uint32_t f) { return arr.coverage(f, kLvm) > 0; };
