@@ -75,11 +75,12 @@ std::optional<bool> face_contains(const std::vector<ExactVec>& v, const ExactVec
 struct FacesThatMatter {
   std::vector<uint32_t> kept;
   std::vector<uint64_t> windows_met;  // of each face
+  std::vector<uint8_t> redundant;     // of each face
 };
 
 FacesThatMatter faces_that_matter(const std::vector<std::vector<ExactVec>>& faces,
                                   std::span<const ClipWindow> windows) {
-  const std::vector<uint8_t> redundant = redundant_faces(faces);
+  std::vector<uint8_t> redundant = redundant_faces(faces);
   std::vector<uint64_t> met(faces.size(), 0);
   tbb::parallel_for(size_t{0}, faces.size(), [&](size_t i) {
     for (size_t k = 0; k < windows.size() && !redundant[i]; ++k) met[i] |= uint64_t{!windows[k].misses(faces[i])} << k;
@@ -89,6 +90,7 @@ FacesThatMatter faces_that_matter(const std::vector<std::vector<ExactVec>>& face
     if (!redundant[i] && (windows.empty() || met[i] != 0)) out.kept.push_back(i);
   }
   out.windows_met = std::move(met);
+  out.redundant = std::move(redundant);
   return out;
 }
 
@@ -115,21 +117,31 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
                 eme.statistics.border_edges);
   if (stats) stats->envelope = eme.statistics;
   SumVertices sum(mesh);
-  std::vector<std::vector<ExactVec>> faces, normals;
+  std::vector<std::vector<ExactVec>> faces;
   Interruptions interruptions;
   for (const EnvelopeFace& f : eme.faces) {
     interruptions.tick();
-    std::vector<ExactVec> v, n;
+    std::vector<ExactVec> v;
     for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
-    for (size_t i = 0; i < v.size(); ++i) n.push_back(exact::cross(v[i], v[(i + 1) % v.size()]));
-    circles.insert(circles.end(), n.begin(), n.end());
     faces.push_back(std::move(v));
-    normals.push_back(std::move(n));
   }
-  for (const ClipWindow& w : clip) circles.insert(circles.end(), w.normals().begin(), w.normals().end());
-  const auto [kept, windows_met] = faces_that_matter(faces, clip);
+  const auto [kept, windows_met, redundant] = faces_that_matter(faces, clip);
   spdlog::debug("global occlusion: {} of {} envelope faces lie inside larger ones or miss the {} windows "
                 "around the LVM", faces.size() - kept.size(), faces.size(), clip.size());
+  // The open cells are the faces that are not redundant: a redundant face's open inside
+  // lies in the union of larger ones, and what OpenCells leaves undecided the probe
+  // decides. Their sides are the circles the reference must avoid, with the windows'
+  // (the unions hold no other faces).
+  std::vector<OpenCells::Cell> open;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    interruptions.tick();
+    if (redundant[i]) continue;
+    std::vector<ExactVec> n;
+    for (size_t k = 0; k < faces[i].size(); ++k) n.push_back(exact::cross(faces[i][k], faces[i][(k + 1) % faces[i].size()]));
+    circles.insert(circles.end(), n.begin(), n.end());
+    open.push_back({faces[i], std::move(n)});
+  }
+  for (const ClipWindow& w : clip) circles.insert(circles.end(), w.normals().begin(), w.normals().end());
   const ExactVec r = sphere::generic_direction(circles, points);
   auto union_of = [&](std::span<const uint32_t> subset) {
     OccludingCells cells;
@@ -163,8 +175,6 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
   sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers);
   spdlog::debug("global occlusion: {} faces in {} tiers, {} inside the union of the tiers before theirs",
                 tiers.faces, tiers.tiers, tiers.left_out);
-  std::vector<OpenCells::Cell> open(faces.size());
-  for (size_t i = 0; i < faces.size(); ++i) open[i] = {std::move(faces[i]), std::move(normals[i])};
   return {std::move(region), r, OpenCells(std::move(open))};
 }
 
