@@ -247,8 +247,14 @@ StatusOr<Analysis> analyze_in_arena(const AnalyzeRequest& request, int threads,
                       for (size_t i = range.begin(); i != range.end(); ++i) {
                         interruption_point();
                         auto ts = Clock::now();
-                        SurfaceVisibility vis = compute_surface_visibility(
-                            impl->part, triangles[i], !request.options.lvm_only(), method);
+                        // Isolated: a thread waiting in this surface's inner loops helps
+                        // with them only. Else it could take up another surface there and
+                        // finish it first, holding this one back (the largest surface of a
+                        // part is its critical path) and counting its time twice.
+                        SurfaceVisibility vis = tbb::this_task_arena::isolate([&] {
+                          return compute_surface_visibility(impl->part, triangles[i],
+                                                            !request.options.lvm_only(), method);
+                        });
                         surfaces[i].maps =
                             surface_maps(impl->part.mesh(), std::move(vis), seconds_since(ts));
                         const SurfaceStatistics& st = surfaces[i].maps.statistics;

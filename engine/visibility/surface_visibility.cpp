@@ -24,12 +24,16 @@ exact::ExactVec normal_of(const SolidMesh& mesh, uint32_t t) {
 class FrontHit {
  public:
   FrontHit(const SolidMesh& mesh, const sphere::SphericalImage& lvm) : mesh_(mesh), lvm_(lvm) {
+    // A full circle has no vertex (its start is not a direction).
     for (const sphere::Face& f : lvm.faces()) {
       for (const sphere::Loop& l : f.loops) {
-        for (const sphere::Arc& a : l.arcs) vertices_.push_back(exact::unit_estimate(a.start));
+        for (const sphere::Arc& a : l.arcs) {
+          if (!a.full) vertices_.push_back(exact::unit_estimate(a.start));
+        }
       }
     }
     for (const sphere::Arc& a : lvm.curves()) {
+      if (a.full) continue;
       vertices_.push_back(exact::unit_estimate(a.start));
       vertices_.push_back(exact::unit_estimate(a.end));
     }
