@@ -7,6 +7,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -215,11 +216,23 @@ void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Vis
   const size_t K = window.size();
   const std::vector<double> o_max = window.extremes(mesh_, o_, true);
   const std::vector<double> s_min = window.extremes(mesh_, s_, false);
+  // The largest values over each chunk of O: a chunk separated from a triangle of S holds
+  // no triangle that is not (the 103k-triangle pocket part spent a third of its time in
+  // this test pair by pair, a probed direction costing |S| |O| of them).
+  constexpr size_t kChunk = 32;
+  const size_t chunks = (o_.size() + kChunk - 1) / kChunk;
+  std::vector<double> chunk_max(chunks * K, -std::numeric_limits<double>::infinity());
+  for (size_t oi = 0; oi < o_.size(); ++oi) {
+    for (size_t k = 0; k < K; ++k) chunk_max[oi / kChunk * K + k] = std::max(chunk_max[oi / kChunk * K + k], o_max[oi * K + k]);
+  }
   tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
     Interruptions interruptions(64);
-    for (size_t oi = 0; oi < o_.size(); ++oi) {
-      interruptions.tick();
-      if (window.may_meet(&o_max[oi * K], &s_min[si * K]) && !visit(s_[si], o_[oi])) return;
+    for (size_t c = 0; c < chunks; ++c) {
+      if (K > 0 && !window.may_meet(&chunk_max[c * K], &s_min[si * K])) continue;
+      for (size_t oi = c * kChunk; oi < std::min(o_.size(), (c + 1) * kChunk); ++oi) {
+        interruptions.tick();
+        if ((K == 0 || window.may_meet(&o_max[oi * K], &s_min[si * K])) && !visit(s_[si], o_[oi])) return;
+      }
     }
   });
   interruption_point();  // pairs left unvisited when cancelled
