@@ -70,7 +70,8 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
                                                     ConvexDecompositionStatistics* stats) {
   const size_t K = window ? window->size() : 0;
   // Window values at the vertices of each triangle of O (max) and of S (min).
-  const std::vector<double> o_max = K ? window->extremes(mesh, o, true) : std::vector<double>{};
+  const WindowRows o_max(window, o.size(), K ? window->extremes(mesh, o, true) : std::vector<double>{},
+                         WindowRows::Side::occluder);
   const std::vector<double> s_min = K ? window->extremes(mesh, s, false) : std::vector<double>{};
 
   struct Chunk {
@@ -91,12 +92,10 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
   tbb::parallel_for(size_t{0}, s.size(), [&](size_t si) {
     const Triangle& fs = mesh.triangles[s[si]];
     Interruptions interruptions(16);
-    for (size_t oi = 0; oi < o.size(); ++oi) {
+    size_t visited = 0;
+    o_max.for_each_meeting(s_min.data() + si * K, [&](size_t oi) {
       interruptions.tick();
-      if (K && !window->may_meet(&o_max[oi * K], &s_min[si * K])) {
-        ++chunks[si].outside_window;
-        continue;
-      }
+      ++visited;
       const Triangle& fo = mesh.triangles[o[oi]];
       std::vector<ExactVec> d;
       for (uint32_t q : fo) {
@@ -106,7 +105,9 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
       }
       SphericalImage map = pairwise_occlusion_map(d);
       if (map.dimension() == 2) chunks[si].maps.push_back(std::move(map));
-    }
+      return true;
+    });
+    chunks[si].outside_window = o.size() - visited;
   });
   interruption_point();  // triangles of S left undone when cancelled
   std::vector<SphericalImage> maps;

@@ -100,4 +100,15 @@ bool DirectionWindow::may_meet(const double* q_max, const double* p_min) const {
   return cell_end_.empty();
 }
 
+WindowRows::WindowRows(const DirectionWindow* window, size_t count, std::vector<double> rows, Side side)
+    : window_(window), k_(window ? window->size() : 0), count_(count), side_(side), rows_(std::move(rows)) {
+  if (k_ == 0) return;
+  const bool largest = side == Side::occluder;
+  runs_.assign((count_ + kRun - 1) / kRun * k_, largest ? -HUGE_VAL : HUGE_VAL);
+  for (size_t i = 0; i < count_; ++i) {
+    double* run = &runs_[i / kRun * k_];
+    for (size_t k = 0; k < k_; ++k) run[k] = largest ? std::max(run[k], row(i)[k]) : std::min(run[k], row(i)[k]);
+  }
+}
+
 }  // namespace gvm

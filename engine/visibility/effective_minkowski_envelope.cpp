@@ -174,9 +174,6 @@ class WindowValues {
       first = false;
     }
   }
-  bool may_meet(const double* q_max, const double* p_min) const {
-    return window_->may_meet(q_max, p_min);
-  }
   size_t size() const { return k_; }
 
  private:
@@ -203,11 +200,25 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   std::vector<Partial> parts;
   const WindowValues win(window, mesh);
   const size_t K = win.size();
-  const std::vector<double> o_vertex = win.at(to.vertices()), s_vertex = win.at(ts.vertices());
+  using Side = WindowRows::Side;
+  const WindowRows o_vertex(window, to.vertices().size(), win.at(to.vertices()), Side::occluder);
+  const WindowRows s_vertex(window, ts.vertices().size(), win.at(ts.vertices()), Side::surface);
   std::vector<double> s_edge_min(ts.edges().size() * K);
   for (size_t i = 0; i < ts.edges().size() && win.active(); ++i) {
     win.extreme({ts.edges()[i].a, ts.edges()[i].b}, false, &s_edge_min[i * K]);
   }
+  const WindowRows s_edge(window, ts.edges().size(), std::move(s_edge_min), Side::surface);
+  // Pairs the window rules out are counted, not visited.
+  auto visit_meeting = [](const WindowRows& rows, const std::vector<double>& other, Partial& out, auto&& visit) {
+    size_t visited = 0;
+    rows.for_each_meeting(other.data(), [&](size_t i) {
+      ++visited;
+      visit(i);
+      return true;
+    });
+    out.tentative += rows.size();
+    out.outside_window += rows.size() - visited;
+  };
 
   // VF: V_O + (-F_S). Normal n = (b - a) x (c - a) of F_S; the face (q-a, q-b, q-c) has
   // normal n; volume directions are O's edges at q.
@@ -216,24 +227,19 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
     std::vector<double> p_min(K);
     if (win.active()) win.extreme({f[0], f[1], f[2]}, false, p_min.data());
-    for (size_t i = 0; i < to.vertices().size(); ++i) {
+    visit_meeting(o_vertex, p_min, out, [&](size_t i) {
       const uint32_t q = to.vertices()[i];
-      ++out.tentative;
-      if (win.active() && !win.may_meet(&o_vertex[i * K], p_min.data())) {
-        ++out.outside_window;
-        continue;
-      }
       CriticalSet crit;
       for (uint32_t w : to.neighbors(i)) {
         crit.add(exact::det_diff(a, b, a, c, P[q], P[w]));
         if (crit.mixed()) break;
       }
-      if (crit.mixed()) continue;
+      if (crit.mixed()) return;
       ++out.kept;
       int orient = envelope_orientation(crit, exact::orient3d(a, b, c, P[q]));
       if (orient > 0) out.add({{q, f[0]}, {q, f[1]}, {q, f[2]}});
       if (orient < 0) out.add({{q, f[2]}, {q, f[1]}, {q, f[0]}});
-    }
+    });
   });
 
   // FV: F_O + (-V_S). Normal n of F_O; volume directions are -(w - p) for S's edges at p.
@@ -242,24 +248,19 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
     std::vector<double> q_max(K);
     if (win.active()) win.extreme({f[0], f[1], f[2]}, true, q_max.data());
-    for (size_t i = 0; i < ts.vertices().size(); ++i) {
+    visit_meeting(s_vertex, q_max, out, [&](size_t i) {
       const uint32_t p = ts.vertices()[i];
-      ++out.tentative;
-      if (win.active() && !win.may_meet(q_max.data(), &s_vertex[i * K])) {
-        ++out.outside_window;
-        continue;
-      }
       CriticalSet crit;
       for (uint32_t w : ts.neighbors(i)) {
         crit.add(exact::det_diff(a, b, a, c, P[w], P[p]));
         if (crit.mixed()) break;
       }
-      if (crit.mixed()) continue;
+      if (crit.mixed()) return;
       ++out.kept;
       int orient = envelope_orientation(crit, exact::det_diff(a, b, a, c, P[p], a));
       if (orient > 0) out.add({{f[0], p}, {f[1], p}, {f[2], p}});
       if (orient < 0) out.add({{f[2], p}, {f[1], p}, {f[0], p}});
-    }
+    });
   });
 
   // EE: E_O + (-E_S), a parallelogram with normal n = (q1 - q0) x (p1 - p0); volume
@@ -269,14 +270,9 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     const Point3 &q0 = P[eo.a], &q1 = P[eo.b];
     std::vector<double> q_max(K);
     if (win.active()) win.extreme({eo.a, eo.b}, true, q_max.data());
-    for (size_t j = 0; j < ts.edges().size(); ++j) {
+    visit_meeting(s_edge, q_max, out, [&](size_t j) {
       const auto& es = ts.edges()[j];
       const Point3 &p0 = P[es.a], &p1 = P[es.b];
-      ++out.tentative;
-      if (win.active() && !win.may_meet(q_max.data(), &s_edge_min[j * K])) {
-        ++out.outside_window;
-        continue;
-      }
       CriticalSet crit;
       for (int k = 0; k < eo.face_count && !crit.mixed(); ++k) {
         crit.add(exact::det_diff(q0, q1, p0, p1, q0, P[eo.opposite[k]]));
@@ -284,7 +280,7 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
       for (int k = 0; k < es.face_count && !crit.mixed(); ++k) {
         crit.add(exact::det_diff(q0, q1, p0, p1, P[es.opposite[k]], p0));
       }
-      if (crit.mixed()) continue;
+      if (crit.mixed()) return;
       // Parallel edges give n = 0: every value, sigma included, is zero and the
       // "parallelogram" is a segment, dropped as tangent below.
       ++out.kept;
@@ -292,7 +288,7 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
       // (q0-p0, q1-p0, q1-p1, q0-p1) runs counter-clockwise around -n.
       if (orient < 0) out.add({{eo.a, es.a}, {eo.b, es.a}, {eo.b, es.b}, {eo.a, es.b}});
       if (orient > 0) out.add({{eo.a, es.b}, {eo.b, es.b}, {eo.b, es.a}, {eo.a, es.a}});
-    }
+    });
   });
 
   EnvelopeStatistics stats;

@@ -7,7 +7,6 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <span>
 
@@ -214,26 +213,14 @@ void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Vis
   // Pairs whose segments certainly miss the cell are left out (certified double filter).
   const DirectionWindow window(cell, coordinate_bound_);
   const size_t K = window.size();
-  const std::vector<double> o_max = window.extremes(mesh_, o_, true);
+  const WindowRows o_max(&window, o_.size(), window.extremes(mesh_, o_, true), WindowRows::Side::occluder);
   const std::vector<double> s_min = window.extremes(mesh_, s_, false);
-  // The largest values over each chunk of O: a chunk separated from a triangle of S holds
-  // no triangle that is not (the 103k-triangle pocket part spent a third of its time in
-  // this test pair by pair, a probed direction costing |S| |O| of them).
-  constexpr size_t kChunk = 32;
-  const size_t chunks = (o_.size() + kChunk - 1) / kChunk;
-  std::vector<double> chunk_max(chunks * K, -std::numeric_limits<double>::infinity());
-  for (size_t oi = 0; oi < o_.size(); ++oi) {
-    for (size_t k = 0; k < K; ++k) chunk_max[oi / kChunk * K + k] = std::max(chunk_max[oi / kChunk * K + k], o_max[oi * K + k]);
-  }
   tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
     Interruptions interruptions(64);
-    for (size_t c = 0; c < chunks; ++c) {
-      if (K > 0 && !window.may_meet(&chunk_max[c * K], &s_min[si * K])) continue;
-      for (size_t oi = c * kChunk; oi < std::min(o_.size(), (c + 1) * kChunk); ++oi) {
-        interruptions.tick();
-        if ((K == 0 || window.may_meet(&o_max[oi * K], &s_min[si * K])) && !visit(s_[si], o_[oi])) return;
-      }
-    }
+    o_max.for_each_meeting(s_min.data() + si * K, [&](size_t oi) {
+      interruptions.tick();
+      return visit(s_[si], o_[oi]);
+    });
   });
   interruption_point();  // pairs left unvisited when cancelled
 }
@@ -344,13 +331,15 @@ OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in
   Strips strips;
   tbb::concurrent_vector<ExactVec> lines;
   for (const auto& [plane, triangles] : strip_planes(mesh_, in_plane)) {
-    const std::vector<double> s_min = window.extremes(mesh_, triangles, false);
+    const WindowRows s_min(&window, triangles.size(), window.extremes(mesh_, triangles, false),
+                           WindowRows::Side::surface);
     tbb::concurrent_vector<std::pair<uint32_t, uint32_t>> pairs;
     tbb::parallel_for(size_t{0}, o_.size(), [&](size_t oi) {
       std::vector<uint32_t> near;
-      for (size_t si = 0; si < triangles.size(); ++si) {
-        if (window.may_meet(&o_max[oi * K], &s_min[si * K])) near.push_back(triangles[si]);
-      }
+      s_min.for_each_meeting(o_max.data() + oi * K, [&](size_t si) {
+        near.push_back(triangles[si]);
+        return true;
+      });
       if (near.empty() || !touches(mesh_, plane, o_[oi])) return;
       for (uint32_t fs : near) pairs.emplace_back(fs, o_[oi]);
       std::vector<ExactVec> mine;

@@ -259,14 +259,22 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
     for (size_t i = 0; i < k; ++i) out[i] = largest ? std::max(out[i], other[i]) : std::min(out[i], other[i]);
     return out;
   };
-  std::vector<std::vector<double>> s_edge, s_corner, o_corner, o_edge;
-  for (const auto& e : border.edges) s_edge.push_back(extreme(e[0], e[1], false));
-  for (const auto& c : border.corners) s_corner.push_back(values(c.first));
+  // The rows of S's elements, in runs that the window rules out at once.
+  auto rows_of_s = [&](const auto& elements, auto&& row_of) {
+    std::vector<double> flat;
+    flat.reserve(elements.size() * k);
+    for (const auto& e : elements) {
+      const std::vector<double> r = row_of(e);
+      flat.insert(flat.end(), r.begin(), r.end());
+    }
+    return WindowRows(&window, elements.size(), std::move(flat), WindowRows::Side::surface);
+  };
+  auto edge_min = [&](const auto& e) { return extreme(e[0], e[1], false); };
+  auto corner_values = [&](const auto& c) { return values(c.first); };
+  const WindowRows s_edge = rows_of_s(border.edges, edge_min), s_corner = rows_of_s(border.corners, corner_values);
+  std::vector<std::vector<double>> o_corner, o_edge;
   for (const auto& c : occ.corners) o_corner.push_back(values(c.first));
   for (const auto& e : occ.edges) o_edge.push_back(extreme(e[0], e[1], true));
-  auto may_meet = [&](const std::vector<double>& o_max, const std::vector<double>& s_min) {
-    return window.may_meet(o_max.data(), s_min.data());
-  };
   // One slot per element of O, filled in parallel and read in order (deterministic).
   struct Found {
     std::vector<GrazingArc> arcs;
@@ -275,31 +283,31 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   std::vector<Found> at_corner(occ.corners.size()), at_edge(occ.edges.size());
   tbb::parallel_for(size_t{0}, occ.corners.size(), [&](size_t i) {
     const auto& [q, fan_q] = occ.corners[i];
-    for (size_t j = 0; j < border.edges.size(); ++j) {
+    s_edge.for_each_meeting(o_corner[i].data(), [&](size_t j) {
       const auto& e = border.edges[j];
-      if (q == e[0] || q == e[1] || !may_meet(o_corner[i], s_edge[j]) || edge_to_corner_rules_out(mesh, e, q, fan_q)) {
-        continue;
+      if (q != e[0] && q != e[1] && !edge_to_corner_rules_out(mesh, e, q, fan_q)) {
+        add_arc(mesh, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
       }
-      add_arc(mesh, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
-    }
-    for (size_t j = 0; j < border.corners.size(); ++j) {
+      return true;
+    });
+    s_corner.for_each_meeting(o_corner[i].data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
-      if (q == p || !may_meet(o_corner[i], s_corner[j]) || corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q)) {
-        continue;
+      if (q != p && !corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q)) {
+        const ExactVec u = direction(mesh, p, q);
+        if (open.may_meet(u, u)) at_corner[i].points.push_back(u);
       }
-      const ExactVec u = direction(mesh, p, q);
-      if (open.may_meet(u, u)) at_corner[i].points.push_back(u);
-    }
+      return true;
+    });
   });
   tbb::parallel_for(size_t{0}, occ.edges.size(), [&](size_t i) {
     const auto& e = occ.edges[i];
-    for (size_t j = 0; j < border.corners.size(); ++j) {
+    s_corner.for_each_meeting(o_edge[i].data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
-      if (p == e[0] || p == e[1] || !may_meet(o_edge[i], s_corner[j]) || corner_to_edge_rules_out(mesh, p, fan_p, e)) {
-        continue;
+      if (p != e[0] && p != e[1] && !corner_to_edge_rules_out(mesh, p, fan_p, e)) {
+        add_arc(mesh, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
       }
-      add_arc(mesh, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
-    }
+      return true;
+    });
   });
   std::vector<GrazingArc> grazing;
   SeamCandidates all;
