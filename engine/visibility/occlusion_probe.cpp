@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <span>
+#include <tuple>
 
 #include <spdlog/spdlog.h>
 
@@ -17,6 +18,7 @@
 #include "sphere/d3.h"
 #include "sphere/point_in_face.h"
 #include "sphere/spherical_image.h"
+#include "visibility/arc_spans.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
 #include "visibility/strip_events.h"
@@ -251,6 +253,78 @@ std::vector<uint32_t> OcclusionProbe::blockers(const ExactVec& u) const {
   return out;
 }
 
+OcclusionProbe::PrismCover OcclusionProbe::prism_cover(const sphere::Arc& open_arc,
+                                                      const std::vector<bool>& in_plane) const {
+  // Each pair's span along the arc in doubles first: most lie inside wider ones and need no
+  // exact map (prusa_adapter-printer: 46,667 maps for one arc). A span that certainly
+  // holds the whole arc ends the search; should its exact map not confirm it (it always
+  // does), every pair is looked at.
+  const ArcSpans frame(open_arc);
+  const double a = frame.start() - ArcSpans::kEndError, b = frame.end() + ArcSpans::kEndError;
+  struct Candidate {
+    uint32_t fs, ft;
+    ArcSpans::Span span;
+  };
+  std::vector<Candidate> candidates;
+  for (bool stop_at_whole : {true, false}) {
+    sphere::SphericalImage cell;
+    cell.add_curve(open_arc);
+    tbb::concurrent_vector<Candidate> found;
+    std::atomic<bool> whole{false};
+    for_each_pair(cell, [&](uint32_t fs, uint32_t ft) {
+      if (whole.load(std::memory_order_relaxed)) return false;
+      if (in_plane[fs]) return true;
+      const ArcSpans::Span span = frame.of_pair(mesh_, fs, ft);
+      if (span.kind == ArcSpans::Span::Kind::kMisses) return true;
+      found.push_back({fs, ft, span});
+      if (stop_at_whole && span.kind == ArcSpans::Span::Kind::kCrosses && span.lo + span.error < a &&
+          span.hi - span.error > b) {
+        whole = true;
+      }
+      return true;
+    });
+    candidates.assign(found.begin(), found.end());
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& x, const Candidate& y) { return std::tie(x.fs, x.ft) < std::tie(y.fs, y.ft); });
+    std::vector<ArcSpans::Span> spans;
+    for (const Candidate& c : candidates) spans.push_back(c.span);
+    const std::vector<uint32_t> matter = spans_that_matter(frame, spans);
+    spdlog::debug("occlusion probe: {} pairs meet the arc's plane, {} exact maps ({} undecided in doubles)",
+                  candidates.size(), matter.size(),
+                  std::count_if(spans.begin(), spans.end(),
+                                [](const ArcSpans::Span& x) { return x.kind == ArcSpans::Span::Kind::kUnknown; }));
+
+    tbb::concurrent_vector<Interval> covered;
+    std::atomic<bool> all_covered{false};
+    tbb::parallel_for(size_t{0}, matter.size(), [&](size_t k) {
+      if (all_covered.load(std::memory_order_relaxed)) return;
+      interruption_point();
+      const Triangle& s = mesh_.triangles[candidates[matter[k]].fs];
+      const Triangle& t = mesh_.triangles[candidates[matter[k]].ft];
+      std::vector<ExactVec> d;
+      for (uint32_t q : t) {
+        for (uint32_t p : s) {
+          if (q != p) d.push_back(ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]));
+        }
+      }
+      const sphere::SphericalImage map = pairwise_occlusion_map(d);
+      if (map.dimension() < 2) return;
+      std::vector<ExactVec> normals;
+      if (!map.is_full_sphere()) {
+        for (const sphere::Arc& arc : map.faces()[0].loops[0].arcs) normals.push_back(arc.normal);
+      }
+      Interval interval;
+      bool whole_arc = false;
+      if (clip(open_arc, normals, interval, &whole_arc)) covered.push_back(std::move(interval));
+      if (whole_arc) all_covered = true;
+    });
+    interruption_point();
+    if (all_covered) return {true, {}};
+    if (!whole) return {false, {covered.begin(), covered.end()}};
+  }
+  return {};  // not reached: the second pass never stops early
+}
+
 std::vector<sphere::Arc> OcclusionProbe::unoccluded(const sphere::Arc& open_arc) const {
   // Triangles of S whose plane holds the arc sweep planar strips all along it, where rays
   // may graze; every other one has u . n_S > 0 on the open arc (it lies in the LVM, and
@@ -269,41 +343,15 @@ std::vector<sphere::Arc> OcclusionProbe::unoccluded(const sphere::Arc& open_arc)
   // F_S hit the inside of T; conversely a generic ray of an open prism that meets the
   // solid first enters it through the inside of a face, and perturbing both ends covers a
   // neighbourhood of u).
-  sphere::SphericalImage cell;
-  cell.add_curve(open_arc);
-  tbb::concurrent_vector<Interval> covered;
-  std::atomic<bool> all_covered{false};  // by one map: the usual case deep in Int(GOM)
-  for_each_pair(cell, [&](uint32_t fs, uint32_t ft) {
-    if (all_covered.load(std::memory_order_relaxed)) return false;
-    if (in_plane[fs]) return true;
-    const Triangle& s = mesh_.triangles[fs];
-    const Triangle& t = mesh_.triangles[ft];
-    std::vector<ExactVec> d;
-    for (uint32_t q : t) {
-      for (uint32_t p : s) {
-        if (q != p) d.push_back(ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]));
-      }
-    }
-    const sphere::SphericalImage map = pairwise_occlusion_map(d);
-    if (map.dimension() < 2) return true;
-    std::vector<ExactVec> normals;
-    if (!map.is_full_sphere()) {
-      for (const sphere::Arc& a : map.faces()[0].loops[0].arcs) normals.push_back(a.normal);
-    }
-    Interval interval;
-    bool whole = false;
-    if (clip(open_arc, normals, interval, &whole)) covered.push_back(std::move(interval));
-    if (whole) all_covered = true;
-    return true;
-  });
-  if (all_covered) return {};
+  const PrismCover prisms = prism_cover(open_arc, in_plane);
+  if (prisms.whole) return {};
   // Outside the prisms' intervals, only the strips can block: their answer is constant
   // between their events (strip_events.h), so each piece is decided at the events and
   // between them. Points between two intervals are decided on their own (rays through
   // them may still enter the solid in a plane of S).
   std::optional<Strips> along;  // built when a piece needs it
   std::vector<sphere::Arc> pieces;
-  for (sphere::Arc& piece : complement(open_arc, {covered.begin(), covered.end()})) {
+  for (sphere::Arc& piece : complement(open_arc, prisms.intervals)) {
     if (exact::same_direction(piece.start, piece.end)) {
       if (!occluded(piece.start)) pieces.push_back(std::move(piece));
     } else if (strips.empty()) {

@@ -32,6 +32,7 @@
 
 #include "exact/exact_vec.h"
 #include "gvm/mesh.h"
+#include "sphere/arc_intervals.h"
 #include "sphere/spherical_image.h"
 
 namespace gvm {
@@ -77,6 +78,13 @@ class OcclusionProbe {
   // blocks, to `out` (merged into maximal arcs, and points).
   void decide_between_events(const sphere::Arc& piece, const sphere::Arc& open_arc, const Strips& strips,
                              std::vector<sphere::Arc>& out) const;
+  // The open intervals of an open arc inside the maps of the pairs of a triangle of S (not
+  // in the arc's plane) and one of O: the arc the prisms block.
+  struct PrismCover {
+    bool whole = false;  // one map holds the whole arc (intervals then left empty)
+    std::vector<sphere::Interval> intervals;
+  };
+  PrismCover prism_cover(const sphere::Arc& open_arc, const std::vector<bool>& in_plane) const;
   // Calls visit(fs, ft) (in parallel) for the pairs of S and O whose segments may have a
   // direction in the cell; a pair's visit returning false ends its triangle of S early.
   template <class Visit>
