@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <numeric>
 #include <random>
@@ -78,6 +79,47 @@ TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
   check_against_faces(faces, to_doubles(arcs_of(faces)), region, r, 5, checked);
   EXPECT_GT(checked.inside, 500);
   EXPECT_GT(checked.outside, 500);
+}
+
+// A convex polygon as the closed image it bounds.
+SphericalImage image_of(const Polygon& p) {
+  Loop loop;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const ExactVec &a = p[i], &b = p[(i + 1) % p.size()];
+    loop.arcs.push_back({a, b, exact::cross(a, b)});
+  }
+  SphericalImage out;
+  out.add_face({{std::move(loop)}, true});
+  return out;
+}
+
+TEST(OcclusionCulling, TiersStopOnceTheNeededSetLiesInsideAndNotBefore) {
+  std::vector<Polygon> faces = overlapping_triangles(21);
+  faces.push_back({v(-6, -6, 8), v(6, -6, 8), v(0, 8, 8)});  // the largest: in the first tier
+  std::vector<uint32_t> all(faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  const D3 r = unit_d({-3, 5, -17});
+  auto unite = [&](std::span<const uint32_t> subset) { return union_of(faces, subset, v(r)); };
+  // Inside the largest triangle: the later tiers are not needed, and around the needed
+  // square the union is still right.
+  const SphericalImage middle = image_of(square(-0.5, -0.5, 0.5, 0.5));
+  ASSERT_GT(covering(faces, v(0, 0, 1)), 0);
+  TieredUnionStatistics stats;
+  const Region region = union_by_tiers(faces, all, {}, unite, v(r), &stats, {}, &middle);
+  EXPECT_GT(stats.not_needed, 500u);
+  Checked checked;
+  check_against_faces(faces, to_doubles(arcs_of(faces)), region, r, 5, checked, [](const D3& u) {
+    return u[2] > 0 && std::fabs(8 * u[0] / u[2]) < 1.5 && std::fabs(8 * u[1] / u[2]) < 1.5;
+  });
+  EXPECT_GT(checked.inside, 20);
+  // A square across the edge of the union, one away from it, or the hemisphere around
+  // the union's middle never lies inside.
+  for (const SphericalImage& needed : {image_of(square(5, 5, 9, 9)), image_of(square(20, 20, 21, 21)),
+                                       SphericalImage::hemisphere(v(0, 0, 1))}) {
+    union_by_tiers(faces, all, {}, unite, v(r), &stats, {}, &needed);
+    EXPECT_EQ(stats.not_needed, 0u);
+    EXPECT_GT(stats.tiers, 2u);
+  }
 }
 
 TEST(OcclusionCulling, FacesThatDoNotLieInsideOthersAreMergedInOneUnion) {

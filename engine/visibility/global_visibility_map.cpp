@@ -105,7 +105,8 @@ struct Occlusion {
 // The closure of the occluded directions by the effective Minkowski envelope (paper
 // Sec. 4): the envelope's faces are the cells, a group's arcs its border chain.
 Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
-                             std::span<const uint32_t> o, const DirectionWindow& window,
+                             std::span<const uint32_t> o, const sphere::SphericalImage& lvm,
+                             const DirectionWindow& window,
                              std::span<const ClipWindow> clip, std::vector<ExactVec>& circles,
                              const std::vector<ExactVec>& points, GlobalOcclusionStatistics* stats) {
   const EffectiveMinkowskiEnvelope eme =
@@ -172,7 +173,7 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     return occluded_directions(cells, r);
   };
   TieredUnionStatistics tiers;
-  sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers);
+  sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers, {}, &lvm);
   spdlog::debug("global occlusion: {} faces in {} tiers, {} inside the union of the tiers before theirs",
                 tiers.faces, tiers.tiers, tiers.left_out);
   return {std::move(region), r, OpenCells(std::move(open))};
@@ -331,7 +332,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const auto union_start = std::chrono::steady_clock::now();
   auto [occluded, r, open_cells] =
       method == OcclusionMethod::kEffectiveMinkowskiEnvelope
-          ? envelope_occlusion(mesh, s, beam, window, clip, circles, point_dirs, stats)
+          ? envelope_occlusion(mesh, s, beam, lvm, window, clip, circles, point_dirs, stats)
           : convex_decomposition_occlusion(mesh, s, beam, window, circles, point_dirs, stats);
   spdlog::debug("global occlusion: closure of the occluded directions: {} boundary arcs, {:.2f} s",
                 occluded.boundary.size(),

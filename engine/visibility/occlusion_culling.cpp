@@ -172,7 +172,37 @@ class UnionSoFar {
     D3 sum{};
     for (const D3& u : f.u) sum = add(sum, u);
     const D3 c = normalized(sum);
-    if (!strictly_inside(f, c)) return false;
+    return strictly_inside(f, c) && in_interior(c);
+  }
+
+  // Whether a closed image (without curves and points) certainly lies inside the union's
+  // interior: each convex cell of it does as a face would (above), a hemisphere when no
+  // boundary arc reaches it (both ends of every arc strictly behind its circle; the arc
+  // pieces are minor) and its pole lies inside.
+  bool holds(const sphere::SphericalImage& image) const {
+    if (image.is_full_sphere() || image.faces().empty() || !image.curves().empty() || !image.points().empty()) {
+      return false;
+    }
+    for (const sphere::Face& f : image.faces()) {
+      if (!f.convex || f.loops.size() != 1) return false;
+      const std::vector<sphere::Arc>& arcs = f.loops[0].arcs;
+      if (arcs.size() == 1 && arcs[0].full) {
+        const D3 pole = normalized(arcs[0].normal.unit());
+        auto behind = [&](const ArcEstimate& a) { return dot(pole, a.a) < -kSlack && dot(pole, a.b) < -kSlack; };
+        if (!in_interior(pole) || !std::all_of(arcs_.begin(), arcs_.end(), behind)) return false;
+        continue;
+      }
+      std::vector<ExactVec> vertices;
+      for (const sphere::Arc& arc : arcs) vertices.push_back(arc.start);
+      if (!holds(estimate(vertices))) return false;
+    }
+    return true;
+  }
+
+ private:
+  // Whether a unit vector certainly lies strictly inside a face of the union (and inside a
+  // window, when the union was clipped to windows).
+  bool in_interior(const D3& c) const {
     if (!windows_.empty()) {
       const ExactVec x = ExactVec::from_point({c[0], c[1], c[2]});
       if (std::none_of(windows_.begin(), windows_.end(),
@@ -187,7 +217,6 @@ class UnionSoFar {
     return false;
   }
 
- private:
   sphere::Region region_;
   std::span<const FaceEstimate> est_;
   std::span<const ClipWindow> windows_;
@@ -203,7 +232,7 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
                               std::span<const ClipWindow> windows,
                               const std::function<sphere::Region(std::span<const uint32_t>)>& union_of,
                               const ExactVec& reference, TieredUnionStatistics* stats,
-                              const TierPolicy& policy) {
+                              const TierPolicy& policy, const sphere::SphericalImage* needed) {
   // Faces by their positions in `kept`, largest first.
   std::vector<FaceEstimate> est(kept.size());
   tbb::parallel_for(size_t{0}, kept.size(), [&](size_t k) { est[k] = estimate(faces[kept[k]]); });
@@ -251,6 +280,13 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
     }
     in_union.insert(in_union.end(), members.begin(), members.end());
     so_far.emplace(std::move(region), est, in_union, windows);
+    if (needed && so_far->holds(*needed)) {
+      local.not_needed = order.size() - (next + tier);
+      spdlog::debug("union by tiers: the LVM lies inside the first {} tiers: {} faces not needed", local.tiers,
+                    local.not_needed);
+      if (stats) *stats = local;
+      return so_far->region();
+    }
   }
 }
 

@@ -22,6 +22,7 @@
 
 #include "exact/exact_vec.h"
 #include "sphere/region_union.h"
+#include "sphere/spherical_image.h"
 #include "visibility/clip_window.h"
 
 namespace gvm {
@@ -43,16 +44,24 @@ struct TierPolicy {
 struct TieredUnionStatistics {
   size_t tiers = 0, faces = 0, left_out = 0;
   bool one_union = false;  // the tiers did not pay: all faces merged at once
+  size_t not_needed = 0;   // faces of later tiers, left out once `needed` lay inside
 };
 
 // faces[i]: a projected face, a convex polygon counter-clockwise around its inside, inside
 // an open hemisphere. union_of(indices) is the closed union of those faces (labelled from
 // `reference`), clipped to `windows` if there are any (occluded_directions.h). Returns the
 // same for faces[kept]: union_of(kept) itself when the tiers do not pay (TierPolicy).
+//
+// With `needed` (the LVM), the union matters only around that closed set: once it lies
+// certainly inside the union of the tiers so far (each of its convex cells meets no
+// boundary arc and has a point strictly inside a face), that union is returned and later
+// tiers are left out. It then holds the same directions on a neighbourhood of `needed`,
+// which is all the GVM reads (prusa_y-rod-holder F16, whose GVM is empty: four tiers
+// of unions, where the first already held the whole LVM).
 sphere::Region union_by_tiers(std::span<const std::vector<exact::ExactVec>> faces,
                               std::span<const uint32_t> kept, std::span<const ClipWindow> windows,
                               const std::function<sphere::Region(std::span<const uint32_t>)>& union_of,
                               const exact::ExactVec& reference, TieredUnionStatistics* stats = nullptr,
-                              const TierPolicy& policy = {});
+                              const TierPolicy& policy = {}, const sphere::SphericalImage* needed = nullptr);
 
 }  // namespace gvm

@@ -289,7 +289,7 @@ OcclusionProbe::PrismCover OcclusionProbe::prism_cover(const sphere::Arc& open_a
     std::vector<ArcSpans::Span> spans;
     for (const Candidate& c : candidates) spans.push_back(c.span);
     const std::vector<uint32_t> matter = spans_that_matter(frame, spans);
-    spdlog::debug("occlusion probe: {} pairs meet the arc's plane, {} exact maps ({} undecided in doubles)",
+    spdlog::trace("occlusion probe: {} pairs meet the arc's plane, {} exact maps ({} undecided in doubles)",
                   candidates.size(), matter.size(),
                   std::count_if(spans.begin(), spans.end(),
                                 [](const ArcSpans::Span& x) { return x.kind == ArcSpans::Span::Kind::kUnknown; }));
