@@ -297,7 +297,12 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     interruptions.tick();
     const ArrangementArc& A = *arcs[i];
     const ArrangementArc& B = *arcs[j];
-    if (exact::parallel(A.normal, B.normal)) {
+    // Most pairs have one arc strictly on one side of the other's circle: two signs, and
+    // none of the tests below.
+    const Sign af = exact::sign_dot(A.from, B.normal), at = exact::sign_dot(A.to, B.normal);
+    if (af == at && af != Sign::kZero) continue;
+    // Both ends of an arc shorter than 180 degrees on B's circle: the same circle.
+    if (af == Sign::kZero && at == Sign::kZero && exact::parallel(A.normal, B.normal)) {
       // Same great circle: endpoints of one strictly inside the other split it.
       if (strictly_inside(A, B.from)) add_on(i, add_occ(B.from));
       if (strictly_inside(A, B.to)) add_on(i, add_occ(B.to));
@@ -305,9 +310,8 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
       if (strictly_inside(B, A.to)) add_on(j, add_occ(A.to));
       continue;
     }
-    const Sign af = exact::sign_dot(A.from, B.normal), at = exact::sign_dot(A.to, B.normal);
     const Sign bf = exact::sign_dot(B.from, A.normal), bt = exact::sign_dot(B.to, A.normal);
-    if ((af == at && af != Sign::kZero) || (bf == bt && bf != Sign::kZero)) continue;
+    if (bf == bt && bf != Sign::kZero) continue;
     if (af != Sign::kZero && at != Sign::kZero && bf != Sign::kZero && bt != Sign::kZero) {
       // Proper crossing at X = s (N_A x N_B): inside A iff s = sign(A.from . N_B), inside B
       // iff -s = sign(B.from . N_A) (the two circles meet at +-X).
@@ -319,11 +323,15 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
       }
       continue;
     }
-    // An endpoint of one arc on the other's circle is the only meeting point there.
-    if (af == Sign::kZero && strictly_inside(B, A.from)) add_on(j, add_occ(A.from));
-    if (at == Sign::kZero && strictly_inside(B, A.to)) add_on(j, add_occ(A.to));
-    if (bf == Sign::kZero && strictly_inside(A, B.from)) add_on(i, add_occ(B.from));
-    if (bt == Sign::kZero && strictly_inside(A, B.to)) add_on(i, add_occ(B.to));
+    // An endpoint of one arc on the other's circle is the only meeting point there; an end
+    // the arcs share (one node: neighbours along a chain) lies inside neither.
+    auto shared = [](const ExactVec& x, const ArrangementArc& other) {
+      return x.node() == other.from.node() || x.node() == other.to.node();
+    };
+    if (af == Sign::kZero && !shared(A.from, B) && strictly_inside(B, A.from)) add_on(j, add_occ(A.from));
+    if (at == Sign::kZero && !shared(A.to, B) && strictly_inside(B, A.to)) add_on(j, add_occ(A.to));
+    if (bf == Sign::kZero && !shared(B.from, A) && strictly_inside(A, B.from)) add_on(i, add_occ(B.from));
+    if (bt == Sign::kZero && !shared(B.to, A) && strictly_inside(A, B.to)) add_on(i, add_occ(B.to));
   }
   // Input points (and the reference) lying inside arcs split them.
   for (size_t k = 0; k <= points.size(); ++k) {
