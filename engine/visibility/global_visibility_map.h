@@ -29,7 +29,7 @@ struct GlobalOcclusionStatistics {
   uint64_t occluders_in_beam = 0;       // faces of O_S that can meet S near the LVM
   EnvelopeStatistics envelope;           // with the envelope
   ConvexDecompositionStatistics convex;  // with convex decomposition
-  uint64_t occluded_boundary_arcs = 0;   // boundary of the closure of Phi(O_S + (-S))
+  uint64_t occluded_boundary_arcs = 0;   // boundary of the closure of Phi(O_S + (-S)), as computed (occlusion_culling.h)
   // #Arrng in the paper's tables: vertices of every arrangement built (the unions and
   // the final overlay with the LVM).
   uint64_t arrangement_vertices = 0;
