@@ -17,6 +17,7 @@ using exact::ExactVec;
 using sphere::Arc;
 using sphere::Interval;
 using Kind = ArcSpans::Span::Kind;
+using sphere::D3;
 
 // Triangles of S at x in [-2, 0] and of O at x in [0, 2], on a small integer grid: many
 // differences lie exactly in the plane z = 0 of the arcs below, some pairs share corners
@@ -185,6 +186,44 @@ TEST(ArcSpans, TouchingSpansDoNotHoldWhatLiesBetweenThem) {
   // A span ending within the error of a wider one's end may reach beyond it: kept.
   const std::vector<ArcSpans::Span> close = {{Kind::kCrosses, -0.7, 0, e}, {Kind::kCrosses, -0.2, -e / 2, 0}};
   EXPECT_EQ(spans_that_matter(frame, close), (std::vector<uint32_t>{0, 1}));
+}
+
+// Directions along arcs with exact ties (one direction scaled), near ties 1e-10, 1e-15 and 1e-25 rad apart,
+// directions on the ends (scaled too) and beyond them: the same list as the exact sort gives.
+TEST(ArcSpans, DirectionsInOrderAlongAnArcAsTheExactSortGivesThem) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-1.7, 1.7);
+  for (const Arc& arc : arcs()) {
+    const sphere::ArcOrder order{arc.normal};
+    const exact::UnitEstimate a = exact::unit_estimate(arc.start), b = exact::unit_estimate(arc.end);
+    const exact::UnitEstimate n = exact::unit_estimate(arc.normal);
+    const D3 e1 = sphere::normalized(sphere::add(a.unit, b.unit)), e2 = sphere::cross(n.unit, e1);
+    std::vector<ExactVec> directions = {arc.start, arc.end, arc.start + arc.start, arc.end + arc.end};
+    for (int i = 0; i < 300; ++i) {
+      const double t = angle(rng);
+      const D3 d = sphere::add(sphere::add(D3{}, e1, std::cos(t)), e2, std::sin(t));
+      const ExactVec x = ExactVec::from_point({d[0], d[1], d[2]});
+      // 1e-25 rad beyond x along the arc, listed first: no estimate tells them apart.
+      if (i % 4 == 0) directions.push_back(x + ExactVec::from_point({1e-25 * e2[0], 1e-25 * e2[1], 1e-25 * e2[2]}));
+      directions.push_back(x);
+      if (i % 3 == 0) directions.push_back(x + x);  // the same direction, another node
+      if (i % 6 == 0) directions.push_back(x + x + x);
+      for (double step : {1e-10, 3e-15, -2e-15}) {  // near ties, the last ones within the estimates' error
+        if (i % 5 != 0) continue;
+        const D3 near = sphere::add(sphere::add(D3{}, e1, std::cos(t + step)), e2, std::sin(t + step));
+        directions.push_back(ExactVec::from_point({near[0], near[1], near[2]}));
+      }
+    }
+    std::vector<ExactVec> expected;
+    for (const ExactVec& d : directions) {
+      if (order.before(arc.start, d) && order.before(d, arc.end)) expected.push_back(d);
+    }
+    std::sort(expected.begin(), expected.end(), [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); });
+    expected.erase(std::unique(expected.begin(), expected.end(), exact::same_direction), expected.end());
+    const std::vector<ExactVec> found = in_order_along(arc, directions);
+    ASSERT_EQ(found.size(), expected.size());
+    for (size_t k = 0; k < found.size(); ++k) ASSERT_TRUE(exact::same_direction(found[k], expected[k])) << k;
+  }
 }
 
 }  // namespace

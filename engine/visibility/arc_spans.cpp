@@ -8,6 +8,7 @@
 
 #include "exact/exact_vec.h"
 #include "exact/predicates.h"
+#include "sphere/arc_intervals.h"
 
 namespace gvm {
 namespace {
@@ -156,6 +157,46 @@ std::vector<uint32_t> spans_that_matter(const ArcSpans& arc, const std::vector<A
     out.push_back(i);
     cover(s.lo + s.error, s.hi - s.error);
   }
+  return out;
+}
+
+std::vector<ExactVec> in_order_along(const sphere::Arc& open_arc, std::vector<ExactVec> directions) {
+  constexpr double kTie = 1e-8;  // far above the angles' errors (ArcSpans::kEndError and less)
+  const sphere::ArcOrder order{open_arc.normal};
+  auto before = [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); };
+  auto same = [](const ExactVec& x, const ExactVec& y) { return exact::same_direction(x, y); };
+  const ArcSpans frame(open_arc);
+  std::vector<std::pair<double, uint32_t>> keyed;
+  std::vector<ExactVec> out;
+  for (uint32_t i = 0; i < directions.size(); ++i) {
+    const exact::UnitEstimate u = exact::unit_estimate(directions[i]);
+    if (!frame.usable() || !(u.radius <= 1e-12)) {  // every order decided exactly
+      out.clear();
+      for (const ExactVec& d : directions) {
+        if (before(open_arc.start, d) && before(d, open_arc.end)) out.push_back(d);
+      }
+      std::sort(out.begin(), out.end(), before);
+      out.erase(std::unique(out.begin(), out.end(), same), out.end());
+      return out;
+    }
+    const double a = frame.angle(u.unit);
+    if (a < frame.start() - kTie || a > frame.end() + kTie) continue;
+    if ((a < frame.start() + kTie || a > frame.end() - kTie) &&
+        !(before(open_arc.start, directions[i]) && before(directions[i], open_arc.end))) {
+      continue;
+    }
+    keyed.emplace_back(a, i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (const auto& [a, i] : keyed) out.push_back(directions[i]);
+  // Runs of angles less than kTie apart hold every pair the angles may misorder.
+  for (size_t b = 0; b < keyed.size();) {
+    size_t e = b + 1;
+    while (e < keyed.size() && keyed[e].first - keyed[e - 1].first < kTie) ++e;
+    if (e - b > 1) std::sort(out.begin() + b, out.begin() + e, before);
+    b = e;
+  }
+  out.erase(std::unique(out.begin(), out.end(), same), out.end());
   return out;
 }
 

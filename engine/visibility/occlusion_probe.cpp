@@ -401,16 +401,12 @@ OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in
     const Corners c = corners(mesh_, fs);
     strips.plane_normals.push_back(exact::unit_estimate(exact::cross(c[1] - c[0], c[2] - c[0])));
   }
-  const ArcOrder order{open_arc.normal};
+  std::vector<ExactVec> both;
   for (const ExactVec& line : lines) {
-    for (const ExactVec& d : {line, -line}) {
-      if (order.before(open_arc.start, d) && order.before(d, open_arc.end)) strips.events.push_back(d);
-    }
+    both.push_back(line);
+    both.push_back(-line);
   }
-  std::vector<ExactVec>& e = strips.events;
-  std::sort(e.begin(), e.end(), [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); });
-  e.erase(std::unique(e.begin(), e.end(), [](const ExactVec& x, const ExactVec& y) { return exact::same_direction(x, y); }),
-          e.end());
+  strips.events = in_order_along(open_arc, std::move(both));
   return strips;
 }
 
