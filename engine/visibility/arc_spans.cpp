@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
-#include <numeric>
 
 #include "exact/exact_vec.h"
 #include "exact/predicates.h"
@@ -165,29 +165,27 @@ std::vector<ExactVec> in_order_along(const sphere::Arc& open_arc, std::vector<Ex
   const sphere::ArcOrder order{open_arc.normal};
   auto before = [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); };
   auto same = [](const ExactVec& x, const ExactVec& y) { return exact::same_direction(x, y); };
+  auto inside = [&](const ExactVec& d) { return before(open_arc.start, d) && before(d, open_arc.end); };
+  auto all_exact = [&] {
+    std::vector<ExactVec> out;
+    std::copy_if(directions.begin(), directions.end(), std::back_inserter(out), inside);
+    std::sort(out.begin(), out.end(), before);
+    out.erase(std::unique(out.begin(), out.end(), same), out.end());
+    return out;
+  };
   const ArcSpans frame(open_arc);
+  if (!frame.usable()) return all_exact();
   std::vector<std::pair<double, uint32_t>> keyed;
-  std::vector<ExactVec> out;
   for (uint32_t i = 0; i < directions.size(); ++i) {
     const exact::UnitEstimate u = exact::unit_estimate(directions[i]);
-    if (!frame.usable() || !(u.radius <= 1e-12)) {  // every order decided exactly
-      out.clear();
-      for (const ExactVec& d : directions) {
-        if (before(open_arc.start, d) && before(d, open_arc.end)) out.push_back(d);
-      }
-      std::sort(out.begin(), out.end(), before);
-      out.erase(std::unique(out.begin(), out.end(), same), out.end());
-      return out;
-    }
+    if (!(u.radius <= 1e-12)) return all_exact();
     const double a = frame.angle(u.unit);
     if (a < frame.start() - kTie || a > frame.end() + kTie) continue;
-    if ((a < frame.start() + kTie || a > frame.end() - kTie) &&
-        !(before(open_arc.start, directions[i]) && before(directions[i], open_arc.end))) {
-      continue;
-    }
+    if ((a < frame.start() + kTie || a > frame.end() - kTie) && !inside(directions[i])) continue;
     keyed.emplace_back(a, i);
   }
   std::sort(keyed.begin(), keyed.end());
+  std::vector<ExactVec> out;
   for (const auto& [a, i] : keyed) out.push_back(directions[i]);
   // Runs of angles less than kTie apart hold every pair the angles may misorder.
   for (size_t b = 0; b < keyed.size();) {
