@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <utility>
@@ -58,33 +59,23 @@ CandidatePairs candidate_pairs(size_t n, const BoxOf& box_of) {
   return out;
 }
 
-// Unites the occurrences (distinct nodes) that are one direction, and returns how many
-// exact comparisons that took. Each is compared only with the representatives of the
-// directions found so far whose boxes overlap its own: every occurrence of a direction
-// holds its exact unit vector in its box, so one representative per direction is enough,
-// and m nodes of one direction cost m comparisons, where all pairs of their boxes cost
-// m^2 / 2 (2,345 nodes of one direction in prusa_y-rod-holder F16 made 2.75 M pairs).
-// The boxes are those candidate_pairs would choose.
-uint64_t unite_equal_directions(std::span<const ExactVec> occ, std::span<const uint32_t> distinct,
-                                UnionFind& same) {
-  const size_t n = distinct.size();
-  std::vector<Box> boxes(n);
-  auto box_tree = [&](bool exact) {
-    for (size_t i = 0; i < n; ++i) {
-      const ExactVec& p = occ[distinct[i]];
-      boxes[i] = exact ? exact_point_box(p) : point_box(exact::unit_estimate(p));
-    }
-    return BoxTree(boxes);
-  };
-  BoxTree tree = box_tree(false);
-  if (tree.overlapping_pairs_exceed(std::max(kDensePairs * n, kManyPairs))) tree = box_tree(true);
-  std::vector<uint8_t> representative(n, 0);
+// Each occurrence j (in order) is compared exactly with the representatives, earlier
+// occurrences of directions not seen before them, whose boxes overlap its own: every
+// occurrence of a direction holds its exact unit vector in its box, so one representative
+// per direction is enough, and m nodes of one direction cost m comparisons, where all
+// pairs of their boxes cost m^2 / 2 (2,345 nodes of one direction in prusa_y-rod-holder
+// F16 made 2.75 M pairs). `found(j, visit)` calls visit(i) for candidates i until it
+// returns true.
+template <class Candidates>
+uint64_t unite_with_representatives(std::span<const ExactVec> occ, std::span<const uint32_t> distinct,
+                                    UnionFind& same, std::vector<uint8_t>& representative,
+                                    const Candidates& candidates) {
   uint64_t compared = 0;
   Interruptions interruptions;
-  for (uint32_t j = 0; j < n; ++j) {
+  for (uint32_t j = 0; j < distinct.size(); ++j) {
     interruptions.tick();
     const uint32_t b = distinct[j];
-    const bool found = tree.visit_overlapping(boxes[j], [&](uint32_t i) {
+    const bool found = candidates(j, [&](uint32_t i) {
       if (!representative[i]) return false;
       ++compared;
       const uint32_t a = distinct[i];
@@ -95,6 +86,84 @@ uint64_t unite_equal_directions(std::span<const ExactVec> occ, std::span<const u
     representative[j] = !found;
   }
   return compared;
+}
+
+// Candidates from a hash grid of cells 2^-19 wide: each box in the cell of its centre.
+// Boxes that overlap have centres at most 2r apart (r: the largest half-width), so j
+// looks in the cells within 2r of its centre, one cell but at cell borders. A box tree
+// of the same boxes cost five times as much (tree, search and all), a twelfth of the
+// arrangements. Empty when some cells hold more pairs than `dense`: clusters the grid
+// cannot part.
+std::optional<uint64_t> unite_by_grid(std::span<const ExactVec> occ, std::span<const uint32_t> distinct,
+                                      std::span<const Box> boxes, size_t dense, UnionFind& same) {
+  constexpr double kCell = 0x1p-19;
+  constexpr int64_t kOffset = int64_t{1} << 20;  // cells of [-2, 2] in 21 bits each
+  const size_t n = distinct.size();
+  double reach = 0;
+  for (const Box& b : boxes) {
+    for (int k = 0; k < 3; ++k) reach = std::max(reach, b.hi[k] - b.lo[k]);
+  }
+  reach = 2 * reach + 0x1p-40;  // twice the half-widths, and the centres' rounding
+  if (!(reach < kCell)) return std::nullopt;
+  auto index = [&](double x) { return std::clamp<int64_t>(int64_t(std::floor(x / kCell)), -kOffset, kOffset - 1) + kOffset; };
+  auto key = [](const std::array<int64_t, 3>& c) { return uint64_t(c[0]) << 42 | uint64_t(c[1]) << 21 | uint64_t(c[2]); };
+  auto centre_cell = [&](const Box& b) {
+    std::array<int64_t, 3> c;
+    for (int k = 0; k < 3; ++k) c[k] = index((b.lo[k] + b.hi[k]) / 2);
+    return c;
+  };
+  absl::flat_hash_map<uint64_t, uint32_t> cells;  // first a count of boxes, then a list's head + 1
+  cells.reserve(n);
+  size_t pairs = 0;
+  for (const Box& b : boxes) pairs += cells[key(centre_cell(b))]++;
+  if (pairs > dense) return std::nullopt;
+  for (auto& [k, head] : cells) head = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> entries;  // (representative, next entry + 1)
+  std::vector<uint8_t> representative(n, 0);
+  const uint64_t compared = unite_with_representatives(occ, distinct, same, representative, [&](uint32_t j, const auto& visit) {
+    const Box& b = boxes[j];
+    std::array<int64_t, 3> lo, hi;
+    for (int k = 0; k < 3; ++k) {
+      const double c = (b.lo[k] + b.hi[k]) / 2;
+      lo[k] = index(c - reach), hi[k] = index(c + reach);
+    }
+    for (int64_t x = lo[0]; x <= hi[0]; ++x)
+      for (int64_t y = lo[1]; y <= hi[1]; ++y)
+        for (int64_t z = lo[2]; z <= hi[2]; ++z) {
+          const auto it = cells.find(key({x, y, z}));
+          if (it == cells.end()) continue;
+          for (uint32_t e = it->second; e != 0; e = entries[e - 1].second) {
+            const uint32_t i = entries[e - 1].first;
+            if (overlap(boxes[i], b) && visit(i)) return true;
+          }
+        }
+    uint32_t& head = cells[key(centre_cell(b))];
+    entries.push_back({j, head});
+    head = static_cast<uint32_t>(entries.size());
+    return false;
+  });
+  return compared;
+}
+
+// Unites the occurrences (distinct nodes) that are one direction, and returns how many
+// exact comparisons that took: with the grid on the estimates' boxes, or where clusters
+// are too dense for it, a box tree on the boxes candidate_pairs would choose.
+uint64_t unite_equal_directions(std::span<const ExactVec> occ, std::span<const uint32_t> distinct,
+                                UnionFind& same) {
+  const size_t n = distinct.size();
+  const size_t dense = std::max(kDensePairs * n, kManyPairs);
+  std::vector<Box> boxes(n);
+  for (size_t i = 0; i < n; ++i) boxes[i] = point_box(exact::unit_estimate(occ[distinct[i]]));
+  if (const std::optional<uint64_t> compared = unite_by_grid(occ, distinct, boxes, dense, same)) return *compared;
+  BoxTree tree(boxes);
+  if (tree.overlapping_pairs_exceed(dense)) {
+    for (size_t i = 0; i < n; ++i) boxes[i] = exact_point_box(occ[distinct[i]]);
+    tree = BoxTree(boxes);
+  }
+  std::vector<uint8_t> representative(n, 0);
+  return unite_with_representatives(occ, distinct, same, representative, [&](uint32_t j, const auto& visit) {
+    return tree.visit_overlapping(boxes[j], visit);
+  });
 }
 
 // (arc, occurrence) pairs grouped by arc, each arc's in the order they were found (its
@@ -472,26 +541,30 @@ void Arrangement::link_half_edges() {
   // Counter-clockwise order of the outgoing half-edges around each vertex P, seen from
   // outside. A half-edge leaving P counter-clockwise around N' has tangent N' x P; for
   // two of them P . (T1 x T2) = |P|^2 det(N1', N2', P) and T1 . T2 = |P|^2 N1' . N2'.
-  auto oriented = [&](uint32_t h) {
-    const Edge& e = edges_[half_[h].edge];
-    return half_[h].forward ? e.normal : -e.normal;
-  };
+  // N' is the edge's normal, negated for a backward half-edge: its sign is carried apart
+  // (negated nodes cost an allocation each).
+  auto orientation = [&](uint32_t h) { return half_[h].forward ? Sign::kPositive : Sign::kNegative; };
+  auto normal = [&](uint32_t h) -> const ExactVec& { return edges_[half_[h].edge].normal; };
+  std::vector<std::pair<int, uint32_t>> keyed;
   Interruptions interruptions;
   for (Vertex& v : vertices_) {
     interruptions.tick();
-    if (v.out.size() < 2) continue;
-    const ExactVec n0 = oriented(v.out[0]);
-    auto group = [&](const ExactVec& n) {
-      Sign s = exact::sign_det(n0, n, v.p);
+    if (v.out.size() < 3) continue;  // two half-edges are in counter-clockwise order either way
+    auto turn = [&](uint32_t a, uint32_t b) {
+      return orientation(a) * orientation(b) * exact::sign_det(normal(a), normal(b), v.p);
+    };
+    const uint32_t h0 = v.out[0];
+    auto group = [&](uint32_t h) {
+      const Sign s = turn(h0, h);
       if (s == Sign::kPositive) return 1;
       if (s == Sign::kNegative) return 3;
-      return exact::sign_dot(n0, n) == Sign::kPositive ? 0 : 2;
+      return orientation(h0) * orientation(h) * exact::sign_dot(normal(h0), normal(h)) == Sign::kPositive ? 0 : 2;
     };
-    std::vector<std::pair<int, uint32_t>> keyed;
-    for (uint32_t h : v.out) keyed.push_back({group(oriented(h)), h});
+    keyed.clear();
+    for (uint32_t h : v.out) keyed.push_back({group(h), h});
     std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
       if (a.first != b.first) return a.first < b.first;
-      return positive(exact::sign_det(oriented(a.second), oriented(b.second), v.p));
+      return positive(turn(a.second, b.second));
     });
     for (size_t k = 0; k < keyed.size(); ++k) v.out[k] = keyed[k].second;
   }
