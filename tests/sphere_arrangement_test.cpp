@@ -157,6 +157,32 @@ TEST(SphereArrangement, ManyNodesOfOneDirectionAreOneVertex) {
   EXPECT_LT(arr.compared_pairs(), uint64_t{4 * kNodes});
 }
 
+// Nodes of one direction whose estimates straddle a border of the grid that finds equal
+// directions: p = (0, 1, 3) lies on the border x = 0, and each construction of it as the
+// meeting of two circles through it rounds its own way, so their boxes' centres fall on
+// both sides. All are one vertex.
+TEST(SphereArrangement, OneDirectionAcrossAGridCellBorderIsOneVertex) {
+  const ExactVec p = v(0, 1, 3);
+  std::vector<ArrangementArc> arcs;
+  add_polygon(arcs, square(-1, -1, 1, 1, -8), 0);
+  std::vector<ArrangementPoint> points;
+  std::vector<double> x;
+  for (int k = 1; k <= 300; ++k) {
+    const ExactVec n1 = exact::cross(p, v(std::sin(k), std::cos(3.0 * k), 0.5 + k));
+    const ExactVec n2 = exact::cross(p, v(std::cos(7.0 * k), 1 + k, std::sin(5.0 * k)));
+    ExactVec m = exact::cross(n1, n2);
+    if (exact::sign_dot(m, p) == Sign::kNegative) m = exact::cross(n2, n1);
+    ASSERT_TRUE(exact::same_direction(m, p));
+    points.push_back({m, 0});
+    x.push_back(exact::unit_estimate(m).unit[0]);
+  }
+  // The estimates do lie on both sides of the border.
+  ASSERT_TRUE(std::any_of(x.begin(), x.end(), [&](double t) { return t < 0; }));
+  ASSERT_TRUE(std::any_of(x.begin(), x.end(), [&](double t) { return t > 0; }));
+  const Arrangement arr(arcs, points, kReference);
+  EXPECT_EQ(arr.vertices().size(), 6u);  // the square's 4 corners, p, the reference
+}
+
 // Non-regularized difference: an arc L (layer 1) through two open occluders (layer 0) that
 // touch at one corner keeps exactly that corner point.
 TEST(SphereArrangement, ArcThroughTouchingOccludersKeepsTheCornerPoint) {
