@@ -130,6 +130,7 @@ TEST(ExactPredicates, RandomDegenerateConfigurationsMatchRationalReference) {
     Point3 b = comb(1, 0), c = comb(0, 1), d = comb(small(rng), small(rng));
     Sign got = orient3d(a, b, c, d);
     ASSERT_EQ(got, reference_orient3d(a, b, c, d)) << "iteration " << iter;
+    ASSERT_EQ(PlaneSide(a, b, c)(d), got) << "iteration " << iter;
     zeros += got == Sign::kZero;
     Point3 e{scaled(), scaled(), scaled()};
     ASSERT_EQ(det_diff(a, b, c, d, e, a), reference_det_diff(a, b, c, d, e, a));
@@ -184,6 +185,7 @@ TEST(ExactPredicates, NearlyDegenerateAndExtremeMagnitudesMatchRationalReference
     }
     const Sign got = det_diff(o, a, o, b, o, c);
     ASSERT_EQ(got, reference_det_diff(o, a, o, b, o, c));
+    ASSERT_EQ(PlaneSide(o, a, b)(c), got);  // orient3d(o, a, b, c), by its other first stage
     decided_near_zero += iter % 5 == 0 && got != Sign::kZero;
     for (int drop = 0; drop < 3; ++drop) {
       const Point3 e{drop == 0 ? 1.0 : 0.0, drop == 1 ? 1.0 : 0.0, drop == 2 ? 1.0 : 0.0};

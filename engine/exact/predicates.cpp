@@ -135,6 +135,26 @@ Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d
   return det3_of_differences(a, b, a, c, a, d);
 }
 
+PlaneSide::PlaneSide(const Point3& a, const Point3& b, const Point3& c) : a_(a), b_(b), c_(c) {
+  const V<double> u = diff<double>(b, a), v = diff<double>(c, a);
+  const double yz = u.y * v.z, zy = u.z * v.y, zx = u.z * v.x, xz = u.x * v.z, xy = u.x * v.y, yx = u.y * v.x;
+  minor_[0] = yz - zy, minor_[1] = zx - xz, minor_[2] = xy - yx;
+  permanent_[0] = std::fabs(yz) + std::fabs(zy);
+  permanent_[1] = std::fabs(zx) + std::fabs(xz);
+  permanent_[2] = std::fabs(xy) + std::fabs(yx);
+}
+
+// det(d - a, b - a, c - a), the same sign as det(b - a, c - a, d - a), evaluated as
+// static_det3 evaluates it, with its bound.
+Sign PlaneSide::operator()(const Point3& d) const {
+  const V<double> w = diff<double>(d, a_);
+  const double det = w.x * minor_[0] + w.y * minor_[1] + w.z * minor_[2];
+  const double ax = std::fabs(w.x), ay = std::fabs(w.y), az = std::fabs(w.z);
+  const double permanent = ax * permanent_[0] + ay * permanent_[1] + az * permanent_[2];
+  if (auto s = decided(det, 0x1p-50 * permanent + (ax + ay + az + 1) * 0x1p-1069)) return *s;
+  return orient3d(a_, b_, c_, d);
+}
+
 Sign det_diff(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1,
               const Point3& c0, const Point3& c1) {
   return det3_of_differences(a0, a1, b0, b1, c0, c1);

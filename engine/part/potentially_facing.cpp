@@ -65,12 +65,13 @@ struct BoxTree {
     return id;
   }
 
-  // Calls leaf(i) for the items of the leaves whose box has a corner strictly in front of
+  // Calls leaf(i) for the items[i] of the leaves whose box has a corner strictly in front of
   // the plane (a, b, c) -- a certified prune for condition (i): the corner farthest along
   // the normal (chosen by its exact signs) is not in front, so no vertex in the box is --
   // until leaf returns true; returns whether one did.
   template <class Leaf>
-  bool search(const Point3& a, const Point3& b, const Point3& c, const Leaf& leaf) const {
+  bool search(const Point3& a, const Point3& b, const Point3& c, const exact::PlaneSide& side,
+              const Leaf& leaf) const {
     if (nodes.empty()) return false;
     Sign ns[3];
     for (int k = 0; k < 3; ++k) ns[k] = exact::cross_component(a, b, c, k);
@@ -82,14 +83,14 @@ struct BoxTree {
       const Point3 corner{ns[0] == Sign::kPositive ? n.hi.x : n.lo.x,
                           ns[1] == Sign::kPositive ? n.hi.y : n.lo.y,
                           ns[2] == Sign::kPositive ? n.hi.z : n.lo.z};
-      if (exact::orient3d(a, b, c, corner) != Sign::kPositive) continue;
+      if (side(corner) != Sign::kPositive) continue;
       if (n.left != kNone) {
         stack[top++] = n.left;
         stack[top++] = n.right;
         continue;
       }
       for (uint32_t i = n.begin; i < n.end; ++i) {
-        if (leaf(items[i])) return true;
+        if (leaf(i)) return true;
       }
     }
     return false;
@@ -117,24 +118,25 @@ std::array<int64_t, 4> plane_key(const SolidMesh& m, uint32_t t, double scale) {
 struct PotentiallyFacing::Impl {
   const SolidMesh& mesh;
   struct Plane {
-    uint32_t representative;      // (ii) holds for all triangles of the plane or for none
+    exact::PlaneSide side;        // (ii) holds for all triangles of the plane or for none
     std::vector<uint32_t> hull;   // vertices of the convex hull of its triangles' vertices
   };
   std::vector<Plane> planes;
   BoxTree rest;  // triangles of smaller planes: both conditions per triangle
+  std::vector<exact::PlaneSide> rest_side;  // the plane of each of rest.items
 
   const Point3& P(uint32_t t, int i) const { return mesh.points[mesh.triangles[t][i]]; }
-  // (ii): some vertex of f not strictly behind the plane of s.
-  bool not_behind(uint32_t s, uint32_t f) const {
+  // (ii): some vertex of f not strictly behind the plane `of_s` of a triangle of S.
+  bool not_behind(const exact::PlaneSide& of_s, uint32_t f) const {
     for (int k = 0; k < 3; ++k) {
-      if (exact::orient3d(P(s, 0), P(s, 1), P(s, 2), P(f, k)) != Sign::kNegative) return true;
+      if (of_s(P(f, k)) != Sign::kNegative) return true;
     }
     return false;
   }
-  // (i): some vertex of s strictly in front of f.
-  bool in_front(uint32_t s, uint32_t f) const {
+  // (i): some vertex of s strictly in front of f (its plane `of_f`).
+  bool in_front(uint32_t s, const exact::PlaneSide& of_f) const {
     for (int k = 0; k < 3; ++k) {
-      if (exact::orient3d(P(f, 0), P(f, 1), P(f, 2), P(s, k)) == Sign::kPositive) return true;
+      if (of_f(P(s, k)) == Sign::kPositive) return true;
     }
     return false;
   }
@@ -224,8 +226,13 @@ PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<ui
   std::vector<std::vector<uint32_t>> planes;
   std::vector<uint32_t> rest;
   group_by_plane(mesh, s, planes, rest);
-  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest))});
-  for (const auto& p : planes) impl->planes.push_back({p.front(), planar_hull(mesh, p)});
+  auto side = [&](uint32_t t) {
+    const Triangle& tri = mesh.triangles[t];
+    return exact::PlaneSide(mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]);
+  };
+  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest)), {}});
+  for (const auto& p : planes) impl->planes.push_back({side(p.front()), planar_hull(mesh, p)});
+  for (uint32_t t : impl->rest.items) impl->rest_side.push_back(side(t));
   impl_ = std::move(impl);
 }
 
@@ -234,13 +241,16 @@ PotentiallyFacing::~PotentiallyFacing() = default;
 bool PotentiallyFacing::faces(uint32_t f) const {
   const Impl& I = *impl_;
   const Point3 &a = I.P(f, 0), &b = I.P(f, 1), &c = I.P(f, 2);
+  const exact::PlaneSide of_f(a, b, c);
   for (const Impl::Plane& plane : I.planes) {
-    if (!I.not_behind(plane.representative, f)) continue;
+    if (!I.not_behind(plane.side, f)) continue;
     for (uint32_t v : plane.hull) {
-      if (exact::orient3d(a, b, c, I.mesh.points[v]) == Sign::kPositive) return true;
+      if (of_f(I.mesh.points[v]) == Sign::kPositive) return true;
     }
   }
-  return I.rest.search(a, b, c, [&](uint32_t s) { return I.in_front(s, f) && I.not_behind(s, f); });
+  return I.rest.search(a, b, c, of_f, [&](uint32_t i) {
+    return I.in_front(I.rest.items[i], of_f) && I.not_behind(I.rest_side[i], f);
+  });
 }
 
 }  // namespace gvm::part_internal

@@ -44,7 +44,10 @@ Fan star(const SolidMesh& mesh, uint32_t t, uint32_t v) {
   Fan fan;
   int corner = 0;
   while (mesh.triangles[t][corner] != v) ++corner;
-  for (uint32_t f : vertex_star(mesh, t, corner)) add_wedge(fan, mesh.triangles[f], v);
+  const std::vector<uint32_t> triangles = vertex_star(mesh, t, corner);
+  fan.wedges.reserve(triangles.size());  // a closed star: as many neighbours as wedges
+  fan.neighbours.reserve(triangles.size());
+  for (uint32_t f : triangles) add_wedge(fan, mesh.triangles[f], v);
   return fan;
 }
 
@@ -177,11 +180,12 @@ int corner_to_edge_side(const SolidMesh& mesh, uint32_t p, const Fan& at_p, cons
 bool edge_to_corner_rules_out(const SolidMesh& mesh, const std::array<uint32_t, 3>& e, uint32_t q,
                              const Fan& at_q) {
   const auto& P = mesh.points;
-  const Sign side = orient3d(P[e[0]], P[e[1]], P[q], P[e[2]]);
+  const exact::PlaneSide plane(P[e[0]], P[e[1]], P[q]);
+  const Sign side = plane(P[e[2]]);
   // u . n_S > 0 in the open LVM: q strictly in front of (a, b, r), i.e. r on the negative side.
   if (side != Sign::kNegative) return true;
   for (uint32_t w : at_q.neighbours) {
-    if (orient3d(P[e[0]], P[e[1]], P[q], P[w]) == side) return true;
+    if (plane(P[w]) == side) return true;
   }
   return false;
 }
@@ -191,12 +195,12 @@ bool edge_to_corner_rules_out(const SolidMesh& mesh, const std::array<uint32_t, 
 // strictly to one side of the plane (a, b, p).
 bool corner_to_edge_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p, const std::array<uint32_t, 4>& e) {
   const auto& P = mesh.points;
-
-  const Sign c = orient3d(P[e[0]], P[e[1]], P[p], P[e[2]]);
-  const Sign d = orient3d(P[e[0]], P[e[1]], P[p], P[e[3]]);
+  const exact::PlaneSide plane(P[e[0]], P[e[1]], P[p]);
+  const Sign c = plane(P[e[2]]);
+  const Sign d = plane(P[e[3]]);
   for (const auto& [x, y] : at_p.wedges) {
-    const Sign sx = orient3d(P[e[0]], P[e[1]], P[p], P[x]);
-    const Sign sy = orient3d(P[e[0]], P[e[1]], P[p], P[y]);
+    const Sign sx = plane(P[x]);
+    const Sign sy = plane(P[y]);
     if (sx == Sign::kZero && sy == Sign::kZero) return true;  // in the plane of S's triangle
     for (Sign side : {sx, sy}) {
       if (side != Sign::kZero && (side == c || side == d)) return true;

@@ -66,16 +66,17 @@ std::vector<std::vector<GrazingArc>> by_circle(std::vector<GrazingArc> arcs) {
 
 // Arcs on one circle (their common normal n), merged in order of their starts along it:
 // an arc starting on the current one extends it while the result stays shorter than 180
-// degrees. The order is by angle in doubles; every merge is decided exactly, so a
-// misordering only merges less.
+// degrees. The order is by angle in doubles, from the estimates (rounding the exact
+// directions took a tenth of the seams of small surfaces); every merge is decided
+// exactly, so a misordering only merges less.
 std::vector<ArrangementArc> merged(std::vector<ArrangementArc> arcs) {
-  if (arcs.empty()) return arcs;
+  if (arcs.size() < 2) return arcs;
   const ExactVec n = arcs.front().normal;
-  const std::array<double, 3> e1 = arcs.front().from.unit(), nu = n.unit();
+  const std::array<double, 3> e1 = exact::unit_estimate(arcs.front().from).unit, nu = exact::unit_estimate(n).unit;
   const std::array<double, 3> e2{nu[1] * e1[2] - nu[2] * e1[1], nu[2] * e1[0] - nu[0] * e1[2],
                                  nu[0] * e1[1] - nu[1] * e1[0]};
   auto angle = [&](const ExactVec& v) {
-    const std::array<double, 3> u = v.unit();
+    const std::array<double, 3> u = exact::unit_estimate(v).unit;
     return std::atan2(u[0] * e2[0] + u[1] * e2[1] + u[2] * e2[2], u[0] * e1[0] + u[1] * e1[1] + u[2] * e1[2]);
   };
   std::vector<std::pair<double, size_t>> by_start;
