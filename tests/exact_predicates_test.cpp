@@ -244,5 +244,29 @@ TEST(ExactVec, CrossProductDirectionsAreExact) {
   EXPECT_NEAR(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], 1.0, 1e-15);
 }
 
+// Coordinates of directions built as meetings of circles through them, with exact zero
+// coordinates the doubles round away (p = (0, 1, 3) and the like): each sign equals the
+// dot with the axis.
+TEST(ExactVec, SignOfACoordinateIsTheDotWithTheAxis) {
+  std::mt19937_64 rng(20261129);
+  std::uniform_int_distribution<int> small(-9, 9);
+  auto vec = [&] { return ExactVec::from_point({0.1 * small(rng), 0.3 * small(rng), 0.7 * small(rng)}); };
+  const ExactVec axes[3] = {ExactVec::from_point({1, 0, 0}), ExactVec::from_point({0, 1, 0}),
+                            ExactVec::from_point({0, 0, 1})};
+  int zeros = 0, rounded_zeros = 0;
+  for (int iter = 0; iter < 3000; ++iter) {
+    ExactVec p = vec();
+    const ExactVec m = cross(cross(p, vec()), cross(p, vec()));  // parallel to p, or zero
+    for (int i = 0; i < 3; ++i) {
+      const Sign s = sign_of_coordinate(m, i);
+      ASSERT_EQ(s, sign_dot(m, axes[i])) << "iteration " << iter << " coordinate " << i;
+      zeros += s == Sign::kZero;
+      rounded_zeros += s == Sign::kZero && m.approx()[i] != 0;
+    }
+  }
+  EXPECT_GT(rounded_zeros, 100);  // the filter alone cannot tell these
+  EXPECT_GT(zeros, rounded_zeros);
+}
+
 }  // namespace
 }  // namespace gvm::exact

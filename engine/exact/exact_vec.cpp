@@ -253,6 +253,13 @@ Sign sign_cos2_angle_minus(const ExactVec& a, const ExactVec& b, double s2) {
   });
 }
 
+Sign sign_of_coordinate(const ExactVec& a, int i) {
+  return filtered_sign([&](auto tag) {
+    using T = decltype(tag);
+    return T(eval<T>(a)[i]);
+  });
+}
+
 bool is_zero(const ExactVec& a) {
   const ExactVec::Node* n = peel(a.node());
   if (n && n->op == Op::kCross && peel(n->a.get()) == peel(n->b.get())) return true;

@@ -51,6 +51,8 @@ ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c);
 Sign sign_dot(const ExactVec& a, const ExactVec& b);
 Sign sign_det(const ExactVec& a, const ExactVec& b, const ExactVec& c);
 bool is_zero(const ExactVec& a);
+// Sign of coordinate i of a (the dot with an axis, without the axis's vector).
+Sign sign_of_coordinate(const ExactVec& a, int i);
 // a x b == 0: parallel, antiparallel, or one of them zero.
 bool parallel(const ExactVec& a, const ExactVec& b);
 // Same direction on the sphere: parallel and a . b > 0.

@@ -285,12 +285,18 @@ std::vector<std::pair<uint32_t, uint32_t>> Arrangement::bridges() const {
     target_boxes.push_back(point_box(est[w]));
   }
   const BoxTree target_tree(target_boxes);
+  // Targets per component (at its root), so that a component holding them all does not
+  // search boxes up to the whole sphere to find none (four such searches per
+  // arrangement: its reference point is a component of its own until bridged).
+  std::vector<uint32_t> targets_in(vertices_.size(), 0);
+  for (uint32_t w : targets) ++targets_in[joined.find(w)];
   // The nearest target outside v's component within the first box around v that holds
   // one (any one would do); none when every target is in v's component.
   auto nearest_outside = [&](uint32_t v) {
     const uint32_t own = joined.find(v);
     uint32_t best = UINT32_MAX;
     double best_d = 1e300;
+    if (targets_in[own] == targets.size()) return std::pair{best_d, best};
     // A half-width over 2 covers the sphere: the last box holds every target, and the
     // search ends even for an estimate that is not a number (none should be: unit
     // estimates are certified at any magnitude).
@@ -326,8 +332,10 @@ std::vector<std::pair<uint32_t, uint32_t>> Arrangement::bridges() const {
     std::sort(nearest.begin(), nearest.end());
     merged = false;
     for (const auto& [d, v, w] : nearest) {
-      if (joined.find(v) == joined.find(w)) continue;
-      joined.unite(v, w);
+      const uint32_t rv = joined.find(v), rw = joined.find(w);
+      if (rv == rw) continue;
+      joined.unite(v, w);  // rw the root
+      targets_in[rw] += targets_in[rv];
       out.emplace_back(v, w);
       merged = true;
     }

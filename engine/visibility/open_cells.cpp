@@ -2,8 +2,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include <array>
-
 #include "sphere/arc_intervals.h"
 
 namespace gvm {
@@ -32,17 +30,17 @@ sphere::Box box_of(const OpenCells::Cell& c) {
       box.hi[i] = std::max(box.hi[i], side.hi[i]);
     }
   }
-  // Built once: a cell's box was six new nodes (TR12J F234 boxes 272k cells).
-  static const std::array<ExactVec, 6> kAxes = {
-      ExactVec::from_point({-1, 0, 0}), ExactVec::from_point({1, 0, 0}), ExactVec::from_point({0, -1, 0}),
-      ExactVec::from_point({0, 1, 0}),  ExactVec::from_point({0, 0, -1}), ExactVec::from_point({0, 0, 1})};
+  // The axis e = sign * (unit vector i) is in the cell iff e . n = sign * n_i >= 0 for
+  // every normal n.
   for (int i = 0; i < 3; ++i) {
-    for (int sign : {-1, 1}) {
-      const ExactVec& e = kAxes[2 * i + (sign > 0)];
-      bool held = true;
-      for (const ExactVec& n : c.normals) held = held && exact::sign_dot(e, n) != Sign::kNegative;
-      if (held) (sign > 0 ? box.hi[i] : box.lo[i]) = sign;
+    bool plus = true, minus = true;
+    for (const ExactVec& n : c.normals) {
+      const Sign s = exact::sign_of_coordinate(n, i);
+      plus = plus && s != Sign::kNegative;
+      minus = minus && s != Sign::kPositive;
     }
+    if (plus) box.hi[i] = 1;
+    if (minus) box.lo[i] = -1;
   }
   return box;
 }
