@@ -19,8 +19,8 @@ namespace gvm::exact {
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
 
 // orient3d(a, b, c, d) for one plane (a, b, c) and many points d: the minors of b - a and
-// c - a that the static filter stage needs are formed once, so that a point costs a third
-// of a call; what that stage cannot decide goes to orient3d.
+// c - a that the static filter stage needs are formed once, so that a point costs about
+// half the arithmetic of a call; what that stage cannot decide goes to orient3d.
 class PlaneSide {
  public:
   PlaneSide(const Point3& a, const Point3& b, const Point3& c);
