@@ -268,5 +268,26 @@ TEST(ExactVec, SignOfACoordinateIsTheDotWithTheAxis) {
   EXPECT_GT(zeros, rounded_zeros);
 }
 
+// The dot's sign from unit estimates where they decide it equals the exact one, for
+// directions orthogonal by value but not by construction (the estimates cannot decide
+// those) and for general ones (they decide most).
+TEST(ExactVec, SignOfADotFromEstimatesIsTheExactOne) {
+  std::mt19937_64 rng(20261129);
+  std::uniform_int_distribution<int> small(-9, 9);
+  auto vec = [&] { return ExactVec::from_point({0.1 * small(rng), 0.3 * small(rng), 0.7 * small(rng)}); };
+  int zeros = 0;
+  for (int iter = 0; iter < 3000; ++iter) {
+    const ExactVec p = vec(), q = vec();
+    const ExactVec m = cross(cross(p, vec()), cross(p, vec()));  // parallel to p, or zero
+    for (const ExactVec& n : {cross(p, q), q}) {
+      if (is_zero(m) || is_zero(n)) continue;
+      const Sign s = sign_dot(m, n, unit_estimate(m), unit_estimate(n));
+      ASSERT_EQ(s, sign_dot(m, n)) << "iteration " << iter;
+      zeros += s == Sign::kZero;
+    }
+  }
+  EXPECT_GT(zeros, 1000);
+}
+
 }  // namespace
 }  // namespace gvm::exact

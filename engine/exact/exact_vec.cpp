@@ -320,4 +320,12 @@ UnitEstimate unit_estimate(const ExactVec& a) {
   return {{w[0] / len, w[1] / len, w[2] / len}, radius};
 }
 
+Sign sign_dot(const ExactVec& a, const ExactVec& b, const UnitEstimate& ea, const UnitEstimate& eb) {
+  const double d = ea.unit[0] * eb.unit[0] + ea.unit[1] * eb.unit[1] + ea.unit[2] * eb.unit[2];
+  const double bound = (ea.radius + eb.radius + ea.radius * eb.radius + 0x1p-50) * (1 + 0x1p-40);
+  if (d > bound) return Sign::kPositive;
+  if (d < -bound) return Sign::kNegative;
+  return sign_dot(a, b);
+}
+
 }  // namespace gvm::exact

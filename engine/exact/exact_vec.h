@@ -73,4 +73,10 @@ struct UnitEstimate {
 };
 UnitEstimate unit_estimate(const ExactVec& a);
 
+// sign_dot(a, b), decided from unit estimates ea, eb of a and b where they certainly can:
+// the exact unit vectors lie within the radii, so their dot is within ra + rb + ra rb of
+// the estimates', which the doubles round by less than 2^-50 more. For loops that test
+// each estimate many times (an arrangement's candidate pairs).
+Sign sign_dot(const ExactVec& a, const ExactVec& b, const UnitEstimate& ea, const UnitEstimate& eb);
+
 }  // namespace gvm::exact

@@ -28,20 +28,6 @@ bool strictly_inside(const ArrangementArc& a, const ExactVec& x) {
          positive(exact::sign_det(a.normal, x, a.to));
 }
 
-// The sign of x . n, from unit estimates of both where they decide it: the exact unit
-// vectors lie within the radii of the estimates, so the exact dot is within
-// rx + rn + rx rn of theirs, and the doubles round it by less than 2^-50 more. Most
-// candidate pairs of arcs have one arc on one side of the other's circle, and this
-// decides them at a fraction of the filtered exact sign.
-Sign side_of(const exact::UnitEstimate& x, const exact::UnitEstimate& n, const ExactVec& exact_x,
-             const ExactVec& exact_n) {
-  const double d = x.unit[0] * n.unit[0] + x.unit[1] * n.unit[1] + x.unit[2] * n.unit[2];
-  const double bound = (x.radius + n.radius + x.radius * n.radius + 0x1p-50) * (1 + 0x1p-40);
-  if (d > bound) return Sign::kPositive;
-  if (d < -bound) return Sign::kNegative;
-  return exact::sign_dot(exact_x, exact_n);
-}
-
 // Pairs are dense when there are more than this many per box, and at least kManyPairs:
 // below that, the exact directions would cost more than the pairs they save (fans of arcs
 // at one vertex, which no box separates, make small dense groups all the time).
@@ -395,8 +381,8 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
     const ArrangementArc& B = *arcs[j];
     // Most pairs have one arc strictly on one side of the other's circle: two signs, and
     // none of the tests below.
-    const Sign af = side_of(est[i].from, est[j].normal, A.from, B.normal);
-    const Sign at = side_of(est[i].to, est[j].normal, A.to, B.normal);
+    const Sign af = exact::sign_dot(A.from, B.normal, est[i].from, est[j].normal);
+    const Sign at = exact::sign_dot(A.to, B.normal, est[i].to, est[j].normal);
     if (af == at && af != Sign::kZero) continue;
     // Both ends of an arc shorter than 180 degrees on B's circle: the same circle.
     if (af == Sign::kZero && at == Sign::kZero && exact::parallel(A.normal, B.normal)) {
@@ -407,8 +393,8 @@ Arrangement::Recorded Arrangement::build(std::span<const ArrangementArc> input,
       if (strictly_inside(B, A.to)) add_on(j, add_occ(A.to));
       continue;
     }
-    const Sign bf = side_of(est[j].from, est[i].normal, B.from, A.normal);
-    const Sign bt = side_of(est[j].to, est[i].normal, B.to, A.normal);
+    const Sign bf = exact::sign_dot(B.from, A.normal, est[j].from, est[i].normal);
+    const Sign bt = exact::sign_dot(B.to, A.normal, est[j].to, est[i].normal);
     if (bf == bt && bf != Sign::kZero) continue;
     if (af != Sign::kZero && at != Sign::kZero && bf != Sign::kZero && bt != Sign::kZero) {
       // Proper crossing at X = s (N_A x N_B): inside A iff s = sign(A.from . N_B), inside B
