@@ -122,6 +122,28 @@ TEST(OcclusionCulling, TiersStopOnceTheNeededSetLiesInsideAndNotBefore) {
   }
 }
 
+TEST(OcclusionCulling, FacesThatMissWhatTheUnionLeavesOfTheNeededSetAreLeftOut) {
+  // A square across the edge of the union: after each tier only the faces that may meet
+  // its part outside the union's interior are kept, and the union is still right on it.
+  const std::vector<Polygon> faces = overlapping_triangles(21);
+  std::vector<uint32_t> all(faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  const D3 r = unit_d({-3, 5, -17});
+  auto unite = [&](std::span<const uint32_t> subset) { return union_of(faces, subset, v(r)); };
+  TieredUnionStatistics whole, around;
+  union_by_tiers(faces, all, {}, unite, v(r), &whole);
+  const SphericalImage needed = image_of(square(5, 5, 9, 9));
+  const Region region = union_by_tiers(faces, all, {}, unite, v(r), &around, {}, &needed);
+  EXPECT_EQ(around.not_needed, 0u);
+  EXPECT_GT(around.left_out, whole.left_out + 500) << "the test no longer leaves faces out of reach";
+  Checked checked;
+  check_against_faces(faces, to_doubles(arcs_of(faces)), region, r, 9, checked, [](const D3& u) {
+    return u[2] > 0 && 8 * u[0] / u[2] > 5 && 8 * u[0] / u[2] < 9 && 8 * u[1] / u[2] > 5 && 8 * u[1] / u[2] < 9;
+  });
+  EXPECT_GT(checked.inside, 20);
+  EXPECT_GT(checked.outside, 20);
+}
+
 TEST(OcclusionCulling, FacesThatDoNotLieInsideOthersAreMergedInOneUnion) {
   // Small triangles scattered far apart: the second tier finds nothing inside the first.
   std::mt19937_64 rng(5);
@@ -137,13 +159,13 @@ TEST(OcclusionCulling, FacesThatDoNotLieInsideOthersAreMergedInOneUnion) {
     return union_of(faces, subset, v(r));
   };
   TieredUnionStatistics stats;
-  // Kept in tiers while the union is small (the default policy: a second tier of 4,096
+  // Kept in tiers while the union is small (the default policy: a second tier of 1,024
   // faces or more), merged at once when it counts as large.
   union_by_tiers(faces, all, {}, union_counted, v(r), &stats);
   EXPECT_FALSE(stats.one_union);
   EXPECT_GT(calls.size(), 2u);
   calls.clear();
-  const Region region = union_by_tiers(faces, all, {}, union_counted, v(r), &stats, {.large_tier = 512});
+  const Region region = union_by_tiers(faces, all, {}, union_counted, v(r), &stats, {.large_tier = 128});
   EXPECT_TRUE(stats.one_union);
   EXPECT_EQ(stats.left_out, 0u);
   ASSERT_EQ(calls.size(), 2u);  // the first tier, then all faces at once

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sphere/region_union.h"
+#include "sphere/set_operations.h"
 #include "support/spherical_polygons.h"
 
 namespace gvm::sphere {
@@ -290,6 +291,73 @@ TEST(RegionUnion, RandomTrianglesDoNotDependOnGrouping) {
     }
     EXPECT_GT(compared, 4000);
   }
+}
+
+// The set of a convex polygon (a 2-cell) or of one arc (a curve).
+SphericalImage image_of(const Polygon& p) {
+  Loop loop;
+  for (size_t i = 0; i < p.size(); ++i) loop.arcs.push_back({p[i], p[(i + 1) % p.size()], exact::cross(p[i], p[(i + 1) % p.size()])});
+  SphericalImage out;
+  out.add_face({{std::move(loop)}, true});
+  return out;
+}
+
+TEST(RegionUnion, OutsideTheInteriorKeepsTheBoundaryWithinTheSet) {
+  // R = [-2, 2]^2 u [0, 4]^2 (on the plane z = 8); the set [-1, 3] x [-1, 1] leaves R's
+  // interior in the closed rectangle [2, 3] x [-1, 0].
+  const std::vector<Polygon> polys = {square(-2, -2, 2, 2), square(0, 0, 4, 4)};
+  const Region r = positive(polys, kOutside);
+  const SphericalImage set = image_of(square(-1, -1, 3, 1));
+  const SphericalImage left = outside_interior(set, r, v(kOutside));
+  ASSERT_EQ(left.faces().size(), 1u);
+  EXPECT_TRUE(left.curves().empty());
+  EXPECT_TRUE(left.points().empty());
+  const SphericalImage expected = image_of(square(2, -1, 3, 0));
+  EXPECT_TRUE(is_subset(left, expected) && is_subset(expected, left));
+  // On R's boundary inside the set: kept; on an edge of one square inside the other: not.
+  EXPECT_TRUE(left.contains(v(2.5, 0, 8)));
+  EXPECT_TRUE(left.contains(v(2, -0.5, 8)));
+  EXPECT_TRUE(left.contains(v(2, 0, 8)));
+  EXPECT_FALSE(left.contains(v(2, 0.5, 8)));
+  EXPECT_FALSE(left.contains(v(1, 0.5, 8)));
+  int checked = 0;
+  for (const D3& u : samples(13)) {
+    const ExactVec x = v(u);
+    const bool expected = set.contains(x) && covering(polys, x) == 0;
+    if (near_a_circle(to_doubles(arcs_of({square(-1, -1, 3, 1), polys[0], polys[1]})), u)) continue;
+    ASSERT_EQ(left.contains(x), expected) << u[0] << " " << u[1] << " " << u[2];
+    checked += expected;
+  }
+  EXPECT_GT(checked, 0);
+
+  // A curve across R keeps its pieces outside the interior, its end on R's boundary too;
+  // a point keeps only what lies outside the interior.
+  SphericalImage line;
+  line.add_curve({v(-3, 0.5, 8), v(3, 0.5, 8), exact::cross(v(-3, 0.5, 8), v(3, 0.5, 8))});
+  const SphericalImage piece = outside_interior(line, r, v(kOutside));
+  ASSERT_EQ(piece.curves().size(), 1u);
+  EXPECT_TRUE(piece.faces().empty());
+  EXPECT_TRUE(piece.contains(v(-2, 0.5, 8)));
+  EXPECT_TRUE(piece.contains(v(-2.5, 0.5, 8)));
+  EXPECT_FALSE(piece.contains(v(-1.9, 0.5, 8)));
+  EXPECT_FALSE(piece.contains(v(2.5, 0.5, 8)));
+  // Along R's boundary a curve stays, along an edge inside R's interior it goes.
+  SphericalImage along;
+  along.add_curve({v(-1, -2, 8), v(1, -2, 8), exact::cross(v(-1, -2, 8), v(1, -2, 8))});
+  along.add_curve({v(2, 0.5, 8), v(2, 1.5, 8), exact::cross(v(2, 0.5, 8), v(2, 1.5, 8))});
+  const SphericalImage on_boundary = outside_interior(along, r, v(kOutside));
+  ASSERT_EQ(on_boundary.curves().size(), 1u);
+  EXPECT_TRUE(on_boundary.contains(v(0, -2, 8)));
+  EXPECT_FALSE(on_boundary.contains(v(2, 1, 8)));
+  SphericalImage points;
+  for (const ExactVec& p : {v(1, 1, 8), v(2, -1, 8), v(5, 5, 8)}) points.add_point(p);
+  const SphericalImage kept = outside_interior(points, r, v(kOutside));
+  ASSERT_EQ(kept.points().size(), 2u);
+  EXPECT_FALSE(kept.contains(v(1, 1, 8)));
+  EXPECT_TRUE(kept.contains(v(2, -1, 8)));
+  EXPECT_TRUE(kept.contains(v(5, 5, 8)));
+  // Nothing left once the set lies in the interior.
+  EXPECT_TRUE(outside_interior(image_of(square(-1, -1, 1, 1)), r, v(kOutside)).is_empty());
 }
 
 }  // namespace

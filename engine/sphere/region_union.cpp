@@ -2,7 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include <array>
+
 #include "exact/interrupt.h"
+#include "sphere/image_overlay.h"
 
 namespace gvm::sphere {
 
@@ -62,6 +65,37 @@ Region region_union(std::vector<Region> parts, const exact::ExactVec& reference)
     parts = std::move(merged);
   }
   return std::move(parts[0]);
+}
+
+SphericalImage outside_interior(const SphericalImage& set, const Region& r, const exact::ExactVec& reference) {
+  constexpr int kSet = 0, kRegion = 1;
+  std::vector<ArrangementArc> arcs;
+  std::vector<ArrangementPoint> points;
+  add_image(set, kSet, arcs, points);
+  for (const ArrangementArc& a : r.boundary) arcs.push_back({a.from, a.to, a.normal, kRegion, a.weight});
+  const std::array<int, 2> coverage{face_winding(set, reference), r.contains_reference ? 1 : 0};
+  const Arrangement arr(arcs, points, 2, reference, coverage);
+  const auto& half = arr.half_edges();
+  auto in_set = [&](uint32_t f) { return arr.coverage(f, kSet) > 0; };
+  auto in_region = [&](uint32_t f) { return arr.coverage(f, kRegion) > 0; };
+  // An edge or a vertex lies in Int(r) when every face around it does.
+  auto edge_in = [&](uint32_t e) {
+    const uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
+    const bool on_set = arr.edge_on_layer(e, kSet) || in_set(left) || in_set(right);
+    return on_set && !(in_region(left) && in_region(right));
+  };
+  auto vertex_in = [&](uint32_t v) {
+    const Arrangement::Vertex& vertex = arr.vertices()[v];
+    bool on_set = arr.vertex_has_point(v, kSet);
+    bool interior = vertex.out.empty() ? in_region(0) : true;
+    for (uint32_t h : vertex.out) {
+      on_set = on_set || arr.edge_on_layer(half[h].edge, kSet) || in_set(half[h].face);
+      interior = interior && in_region(half[h].face);
+    }
+    if (vertex.out.empty()) on_set = on_set || in_set(0);
+    return on_set && !interior;
+  };
+  return arr.extract([&](uint32_t f) { return in_set(f) && !in_region(f); }, edge_in, vertex_in);
 }
 
 }  // namespace gvm::sphere

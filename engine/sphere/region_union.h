@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sphere/arrangement.h"
+#include "sphere/spherical_image.h"
 
 namespace gvm::sphere {
 
@@ -33,5 +34,9 @@ Region positive_region(std::span<const ArrangementArc> arcs, const exact::ExactV
 // The union of closed regions, merged pairwise up a balanced tree (in parallel; the
 // result does not depend on the thread count).
 Region region_union(std::vector<Region> parts, const exact::ExactVec& reference);
+
+// The directions of `set` outside the interior of r (a closed set: r's boundary within
+// `set` is kept). `reference` lies on none of their circles and on no point of `set`.
+SphericalImage outside_interior(const SphericalImage& set, const Region& r, const exact::ExactVec& reference);
 
 }  // namespace gvm::sphere

@@ -174,7 +174,8 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
   };
   TieredUnionStatistics tiers;
   sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers, {}, &lvm);
-  spdlog::debug("global occlusion: {} faces in {} tiers, {} inside the union of the tiers before theirs",
+  spdlog::debug("global occlusion: {} faces in {} tiers, {} inside the union of the tiers before theirs or "
+                "missing what it leaves of the LVM",
                 tiers.faces, tiers.tiers, tiers.left_out);
   return {std::move(region), r, OpenCells(std::move(open))};
 }

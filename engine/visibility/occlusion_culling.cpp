@@ -122,6 +122,12 @@ void add_pieces(const ArrangementArc& arc, std::vector<ArcEstimate>& out) {
   }
 }
 
+// The pieces of an arc of any length (a full circle too).
+void add_pieces(const sphere::Arc& arc, std::vector<ArcEstimate>& out) {
+  const std::vector<ExactVec> v = sphere::split_arc(arc);
+  for (size_t k = 0; k + 1 < v.size(); ++k) add_pieces(ArrangementArc{v[k], v[k + 1], arc.normal}, out);
+}
+
 // A great circle separates the face from the arc: the arc's own circle (all the face's
 // vertices strictly on one side of it), or the circle of a side of the face (both ends
 // of the arc strictly outside it; the arc is minor, so all of it is).
@@ -165,41 +171,61 @@ class UnionSoFar {
   // inside it lies strictly inside a face of the union (and inside a window, when the
   // union was clipped to windows).
   bool holds(const FaceEstimate& f) const {
-    if (!f.certain) return false;
-    for (uint32_t a : arc_tree_->overlapping(f.box)) {
-      if (!separated(f, arcs_[a])) return false;
-    }
-    D3 sum{};
-    for (const D3& u : f.u) sum = add(sum, u);
-    const D3 c = normalized(sum);
-    return strictly_inside(f, c) && in_interior(c);
+    return f.certain && misses(f, arcs_, *arc_tree_) && strictly_inside(f, centre(f)) && in_interior(centre(f));
   }
 
-  // Whether a closed image (without curves and points) certainly lies inside the union's
-  // interior: each convex cell of it does as a face would (above), a hemisphere when no
-  // boundary arc reaches it (both ends of every arc strictly behind its circle; the arc
-  // pieces are minor) and its pole lies inside.
-  bool holds(const sphere::SphericalImage& image) const {
-    if (image.is_full_sphere() || image.faces().empty() || !image.curves().empty() || !image.points().empty()) {
-      return false;
-    }
-    for (const sphere::Face& f : image.faces()) {
-      if (!f.convex || f.loops.size() != 1) return false;
-      const std::vector<sphere::Arc>& arcs = f.loops[0].arcs;
-      if (arcs.size() == 1 && arcs[0].full) {
-        const D3 pole = normalized(arcs[0].normal.unit());
-        auto behind = [&](const ArcEstimate& a) { return dot(pole, a.a) < -kSlack && dot(pole, a.b) < -kSlack; };
-        if (!in_interior(pole) || !std::all_of(arcs_.begin(), arcs_.end(), behind)) return false;
-        continue;
+  // V, the directions of `needed` left outside the union's interior (never the whole
+  // sphere: the union has an interior), for out_of_reach.
+  void leave(const sphere::SphericalImage& needed, const sphere::SphericalImage& left) {
+    if (needed.faces().size() == 1 && needed.faces()[0].convex && needed.curves().empty() && needed.points().empty()) {
+      for (const sphere::Loop& loop : needed.faces()[0].loops) {
+        for (const sphere::Arc& arc : loop.arcs) needed_sides_.push_back(normalized(arc.normal.unit()));
       }
-      std::vector<ExactVec> vertices;
-      for (const sphere::Arc& arc : arcs) vertices.push_back(arc.start);
-      if (!holds(estimate(vertices))) return false;
     }
-    return true;
+    std::vector<ArcEstimate> arcs;
+    for (const sphere::Face& f : left.faces()) {
+      for (const sphere::Loop& loop : f.loops) {
+        for (const sphere::Arc& arc : loop.arcs) add_pieces(arc, arcs);
+      }
+    }
+    for (const sphere::Arc& arc : left.curves()) add_pieces(arc, arcs);
+    // A point is an arc of no length: separated() then needs a side of the face it lies
+    // strictly outside.
+    for (const ExactVec& p : left.points()) {
+      const D3 u = direction(p);
+      arcs.push_back({u, u, D3{}, arc_box(exact::UnitEstimate{u, 4 * kRadius}, exact::UnitEstimate{u, 4 * kRadius})});
+    }
+    left_arcs_ = std::move(arcs);
+    std::vector<Box> boxes;
+    for (const ArcEstimate& e : left_arcs_) boxes.push_back(e.box);
+    left_tree_.emplace(boxes);
+  }
+
+  // Whether face f certainly misses V: no boundary arc, curve or point of V meets f, so
+  // the (connected) face lies wholly inside a 2-cell of V or wholly outside V; and a point
+  // inside f lies outside `needed` or inside the union's interior, so outside V.
+  bool out_of_reach(const FaceEstimate& f) const {
+    if (!f.certain || !left_tree_ || !misses(f, left_arcs_, *left_tree_)) return false;
+    const D3 c = centre(f);
+    return strictly_inside(f, c) && (outside_needed(c) || in_interior(c));
   }
 
  private:
+  static D3 centre(const FaceEstimate& f) {
+    D3 sum{};
+    for (const D3& u : f.u) sum = add(sum, u);
+    return normalized(sum);
+  }
+
+  // Whether a unit vector certainly lies outside `needed`, when that is one convex face.
+  bool outside_needed(const D3& c) const {
+    return std::any_of(needed_sides_.begin(), needed_sides_.end(), [&](const D3& n) { return dot(n, c) < -kSlack; });
+  }
+
+  static bool misses(const FaceEstimate& f, const std::vector<ArcEstimate>& arcs, const BoxTree& tree) {
+    return !tree.visit_overlapping(f.box, [&](uint32_t a) { return !separated(f, arcs[a]); });
+  }
+
   // Whether a unit vector certainly lies strictly inside a face of the union (and inside a
   // window, when the union was clipped to windows).
   bool in_interior(const D3& c) const {
@@ -211,10 +237,7 @@ class UnionSoFar {
       }
     }
     const Box point{{c[0] - kSlack, c[1] - kSlack, c[2] - kSlack}, {c[0] + kSlack, c[1] + kSlack, c[2] + kSlack}};
-    for (uint32_t g : face_tree_->overlapping(point)) {
-      if (strictly_inside(est_[members_[g]], c)) return true;
-    }
-    return false;
+    return face_tree_->visit_overlapping(point, [&](uint32_t g) { return strictly_inside(est_[members_[g]], c); });
   }
 
   sphere::Region region_;
@@ -224,6 +247,9 @@ class UnionSoFar {
   std::optional<BoxTree> arc_tree_;
   std::vector<uint32_t> members_;  // positions of the faces in the union
   std::optional<BoxTree> face_tree_;
+  std::vector<D3> needed_sides_;  // inward normals of `needed`, when that is one convex face
+  std::vector<ArcEstimate> left_arcs_;
+  std::optional<BoxTree> left_tree_;
 };
 
 }  // namespace
@@ -250,7 +276,10 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
     std::vector<uint8_t> inside(candidates.size(), 0);
     if (so_far) {
       tbb::parallel_for(size_t{0}, candidates.size(),
-                        [&](size_t k) { inside[k] = so_far->holds(est[candidates[k]]); });
+                        [&](size_t k) {
+                          const FaceEstimate& f = est[candidates[k]];
+                          inside[k] = so_far->holds(f) || so_far->out_of_reach(f);
+                        });
       interruption_point();
     }
     std::vector<uint32_t> members;
@@ -279,13 +308,19 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
       return region;
     }
     in_union.insert(in_union.end(), members.begin(), members.end());
-    so_far.emplace(std::move(region), est, in_union, windows);
-    if (needed && so_far->holds(*needed)) {
-      local.not_needed = order.size() - (next + tier);
-      spdlog::debug("union by tiers: the LVM lies inside the first {} tiers: {} faces not needed", local.tiers,
-                    local.not_needed);
-      if (stats) *stats = local;
-      return so_far->region();
+    if (needed) {
+      sphere::SphericalImage left = sphere::outside_interior(*needed, region, reference);
+      if (left.is_empty()) {
+        local.not_needed = order.size() - (next + tier);
+        spdlog::debug("union by tiers: the LVM lies inside the first {} tiers: {} faces not needed", local.tiers,
+                      local.not_needed);
+        if (stats) *stats = local;
+        return region;
+      }
+      so_far.emplace(std::move(region), est, in_union, windows);
+      if (!left.is_full_sphere()) so_far->leave(*needed, left);
+    } else {
+      so_far.emplace(std::move(region), est, in_union, windows);
     }
   }
 }

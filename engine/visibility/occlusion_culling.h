@@ -13,6 +13,12 @@
 // the face, with the arc's ends beyond it), so the face lies wholly inside or wholly
 // outside R; and a point inside the face lies strictly inside a face already in R. A face
 // the doubles cannot decide is kept.
+//
+// The union matters only around the LVM (`needed`), and after each tier the exact set V
+// of its directions outside the union's interior is known (sphere::outside_interior): a
+// later face that misses V can change the GVM nowhere and is left out too. That a face
+// misses V is decided the same way: no boundary arc, curve or point of V meets it, and a
+// point inside it lies outside the LVM or strictly inside a face already in the union.
 #pragma once
 
 #include <cstdint>
@@ -35,14 +41,19 @@ namespace gvm {
 // tiers left nothing out, and the groups of its later tiers grew past 11 GB where the
 // groups of all its faces at once stay under 2 GB. Smaller unions keep their tiers: later
 // tiers still leave faces out (prusa_y-rod-holder F16: 6% of tier 3, all of tier 5), and
-// merging all at once there made the Prusa parts 2-17% slower.
+// merging all at once there made the Prusa parts 2-17% slower. The first tier is small
+// since faces are also left out when they miss what the tiers so far leave of the LVM,
+// and each tier narrows that: 1/64 of the faces and at least 64 against 1/16 and 256 took
+// 5% fewer instructions on prusa_extruder-idler's and prusa_y-rod-holder's slowest
+// surfaces (large_tier scaled with it, so that the same unions count as large).
 struct TierPolicy {
-  size_t first_tier_share = 16, min_first_tier = 256;
-  size_t large_tier = 4096, pays_from = 8;
+  size_t first_tier_share = 64, min_first_tier = 64;
+  size_t large_tier = 1024, pays_from = 8;
 };
 
 struct TieredUnionStatistics {
-  size_t tiers = 0, faces = 0, left_out = 0;
+  size_t tiers = 0, faces = 0;
+  size_t left_out = 0;     // inside the union of the tiers before theirs, or missing V (below)
   bool one_union = false;  // the tiers did not pay: all faces merged at once
   size_t not_needed = 0;   // faces of later tiers, left out once `needed` lay inside
 };
@@ -52,12 +63,14 @@ struct TieredUnionStatistics {
 // `reference`), clipped to `windows` if there are any (occluded_directions.h). Returns the
 // same for faces[kept]: union_of(kept) itself when the tiers do not pay (TierPolicy).
 //
-// With `needed` (the LVM), the union matters only around that closed set: once it lies
-// certainly inside the union of the tiers so far (each of its convex cells meets no
-// boundary arc and has a point strictly inside a face), that union is returned and later
-// tiers are left out. It then holds the same directions on a neighbourhood of `needed`,
-// which is all the GVM reads (prusa_y-rod-holder F16, whose GVM is empty: four tiers
-// of unions, where the first already held the whole LVM).
+// With `needed` (the LVM; `reference` then lies on none of its circles and points), the
+// result holds only the same interior as the union of all faces on `needed`, which is all
+// the GVM reads. Let R be the union of the tiers so far and V = needed - Int(R), a closed
+// set. A face that does not meet V is left out: a direction of needed - V lies in Int(R)
+// either way, and every direction of V has a neighbourhood the face does not meet (both
+// are compact), on which leaving it out changes nothing. Once V is empty, R is returned
+// and the later tiers are not needed (prusa_y-rod-holder F16, whose GVM is empty: the
+// first tier already held the whole LVM).
 sphere::Region union_by_tiers(std::span<const std::vector<exact::ExactVec>> faces,
                               std::span<const uint32_t> kept, std::span<const ClipWindow> windows,
                               const std::function<sphere::Region(std::span<const uint32_t>)>& union_of,
