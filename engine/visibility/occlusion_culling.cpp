@@ -310,6 +310,8 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
     in_union.insert(in_union.end(), members.begin(), members.end());
     if (needed) {
       sphere::SphericalImage left = sphere::outside_interior(*needed, region, reference);
+      spdlog::debug("union by tiers: {:.4g} of the LVM's {:.4g} sr left outside the union of {} tiers", left.area(),
+                    needed->area(), local.tiers);
       if (left.is_empty()) {
         local.not_needed = order.size() - (next + tier);
         spdlog::debug("union by tiers: the LVM lies inside the first {} tiers: {} faces not needed", local.tiers,
