@@ -171,7 +171,9 @@ class UnionSoFar {
   // inside it lies strictly inside a face of the union (and inside a window, when the
   // union was clipped to windows).
   bool holds(const FaceEstimate& f) const {
-    return f.certain && misses(f, arcs_, *arc_tree_) && strictly_inside(f, centre(f)) && in_interior(centre(f));
+    if (!f.certain || !misses(f, arcs_, *arc_tree_)) return false;
+    const D3 c = centre(f);
+    return strictly_inside(f, c) && in_interior(c);
   }
 
   // V, the directions of `needed` left outside the union's interior (never the whole
