@@ -81,18 +81,6 @@ TEST(OcclusionCulling, TheUnionByTiersIsTheUnionOfAllFaces) {
   EXPECT_GT(checked.outside, 500);
 }
 
-// A convex polygon as the closed image it bounds.
-SphericalImage image_of(const Polygon& p) {
-  Loop loop;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const ExactVec &a = p[i], &b = p[(i + 1) % p.size()];
-    loop.arcs.push_back({a, b, exact::cross(a, b)});
-  }
-  SphericalImage out;
-  out.add_face({{std::move(loop)}, true});
-  return out;
-}
-
 TEST(OcclusionCulling, TiersStopOnceTheNeededSetLiesInsideAndNotBefore) {
   std::vector<Polygon> faces = overlapping_triangles(21);
   faces.push_back({v(-6, -6, 8), v(6, -6, 8), v(0, 8, 8)});  // the largest: in the first tier

@@ -293,15 +293,6 @@ TEST(RegionUnion, RandomTrianglesDoNotDependOnGrouping) {
   }
 }
 
-// The set of a convex polygon (a 2-cell) or of one arc (a curve).
-SphericalImage image_of(const Polygon& p) {
-  Loop loop;
-  for (size_t i = 0; i < p.size(); ++i) loop.arcs.push_back({p[i], p[(i + 1) % p.size()], exact::cross(p[i], p[(i + 1) % p.size()])});
-  SphericalImage out;
-  out.add_face({{std::move(loop)}, true});
-  return out;
-}
-
 TEST(RegionUnion, OutsideTheInteriorKeepsTheBoundaryWithinTheSet) {
   // R = [-2, 2]^2 u [0, 4]^2 (on the plane z = 8); the set [-1, 3] x [-1, 1] leaves R's
   // interior in the closed rectangle [2, 3] x [-1, 0].

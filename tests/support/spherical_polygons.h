@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sphere/arrangement.h"
+#include "sphere/spherical_image.h"
 
 namespace gvm::sphere::test_polygons {
 
@@ -171,6 +172,18 @@ inline Polygon random_triangle(std::mt19937_64& rng) {
   }
   if (exact::sign_det(p[0], p[1], p[2]) != Sign::kPositive) std::swap(p[1], p[2]);
   return p;
+}
+
+// A convex polygon as the closed image it bounds.
+inline SphericalImage image_of(const Polygon& p) {
+  Loop loop;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const ExactVec &a = p[i], &b = p[(i + 1) % p.size()];
+    loop.arcs.push_back({a, b, exact::cross(a, b)});
+  }
+  SphericalImage out;
+  out.add_face({{std::move(loop)}, true});
+  return out;
 }
 
 }  // namespace gvm::sphere::test_polygons
