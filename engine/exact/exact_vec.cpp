@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cfloat>
 #include <climits>
 #include <cmath>
@@ -207,6 +208,49 @@ std::array<double, 3> ExactVec::unit() const {
   }
   const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   return {d[0] / len, d[1] / len, d[2] / len};
+}
+
+namespace {
+
+// Sign of v - (a + b) / 2 for v = sqrt(x2 / s) >= 0 and doubles 0 <= a < b: the sign of
+// x2 - ((a + b) / 2)^2 s, all exact in dyadics.
+Sign past_midpoint(const Dyadic& x2, const Dyadic& s, double a, double b) {
+  const Dyadic mid = (Dyadic(a) + Dyadic(b)) * Dyadic(0.5);
+  return (x2 - mid * mid * s).sign();
+}
+
+bool odd(double d) { return (std::bit_cast<uint64_t>(d) & 1) != 0; }
+
+// The double nearest sqrt(x2 / s) (ties to even), from an estimate r a few units in the
+// last place off: steps towards it while it lies past a midpoint.
+double nearest_root(const Dyadic& x2, const Dyadic& s, double r) {
+  for (;;) {
+    const double up = std::nextafter(r, INFINITY);
+    const Sign past = past_midpoint(x2, s, r, up);
+    if (past == Sign::kNegative || (past == Sign::kZero && !odd(r))) break;
+    r = up;
+  }
+  while (r > 0) {
+    const double down = std::nextafter(r, 0.0);
+    const Sign past = past_midpoint(x2, s, down, r);
+    if (past == Sign::kPositive || (past == Sign::kZero && !odd(r))) break;
+    r = down;
+  }
+  return r;
+}
+
+}  // namespace
+
+std::array<double, 3> ExactVec::nearest_unit() const {
+  const auto& e = eval<Dyadic>(*this);
+  const Dyadic s = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+  const std::array<double, 3> estimate = unit();
+  std::array<double, 3> out{};
+  for (int i = 0; i < 3; ++i) {
+    const double r = nearest_root(e[i] * e[i], s, std::fabs(estimate[i]));
+    out[i] = e[i].sign() == Sign::kNegative ? -r : r;
+  }
+  return out;
 }
 
 ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c) {

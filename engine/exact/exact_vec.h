@@ -33,6 +33,12 @@ class ExactVec {
   // vector's. The coordinates are truncated to 53 bits (2^-52 each), which moves the norm
   // by 2^-52 at most; the norm and the divisions round within 7 * 2^-54 more.
   std::array<double, 3> unit() const;
+  // The exact direction, each coordinate rounded to the nearest double (ties to even; the
+  // vector must be non-zero). One direction then gives the same doubles however it was
+  // constructed -- a vertex reached through another arc's normal included -- so output
+  // written with it is canonical. Exact comparisons of squares, a few per coordinate: for
+  // output, not for inner loops.
+  std::array<double, 3> nearest_unit() const;
 
   struct Node;
   const Node* node() const { return node_.get(); }

@@ -3,7 +3,7 @@
 namespace gvm::io {
 
 void to_proto(const exact::ExactVec& direction, v1::Vec3* out) {
-  const std::array<double, 3> u = direction.unit();
+  const std::array<double, 3> u = direction.nearest_unit();
   out->set_x(u[0]);
   out->set_y(u[1]);
   out->set_z(u[2]);
