@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -328,6 +329,90 @@ TEST(DirectionWindow, FullSphereKeepsEverything) {
            box_points(rng, 1 + t % 2, {-100, -100, -100}, {100, 100, 100})};
     EXPECT_TRUE(window_may_meet(w, f));
   }
+}
+
+// A face bounded by minor arcs through the given points, the face on their left.
+sphere::Face face_through(const std::vector<std::vector<Point3>>& loops) {
+  sphere::Face f;
+  for (const auto& points : loops) {
+    sphere::Loop& loop = f.loops.emplace_back();
+    for (size_t i = 0; i < points.size(); ++i) {
+      const ExactVec a = v(points[i]), b = v(points[(i + 1) % points.size()]);
+      loop.arcs.push_back({a, b, exact::cross(a, b), false});
+    }
+  }
+  return f;
+}
+
+// What is left of an LVM outside some occluded directions: faces that are not convex,
+// with holes, and arcs and points. The cover must keep every direction of the set, and
+// still rule out directions far from it.
+TEST(DirectionWindow, CoverByCapsKeepsEveryDirectionOfANonConvexSet) {
+  SphericalImage set;
+  set.add_face(face_through({{{-1, -1, 1}, {1, -1, 1}, {1, 0, 1}, {0, 0, 1}, {0, 1, 1}, {-1, 1, 1}}}));  // an L
+  set.add_face(face_through({{{4, -1, -1}, {4, 1, -1}, {4, 1, 1}, {4, -1, 1}},                      // a frame
+                             {{4, -0.5, -0.5}, {4, -0.5, 0.5}, {4, 0.5, 0.5}, {4, 0.5, -0.5}}}));
+  set.add_curve(Arc{v(0, -1, -3), v(1, -1, -3), v(0, -3, 1), false});
+  set.add_point(v(-2, -5, 1));
+  const std::optional<DirectionWindow> w = DirectionWindow::covering(set, {}, kBound);
+  ASSERT_TRUE(w.has_value());
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coord(-6, 6);
+  int inside = 0, ruled_out = 0;
+  for (int t = 0; t < 20000; ++t) {
+    const Point3 d{coord(rng), coord(rng), coord(rng)};
+    const bool in = set.contains(v(d));
+    const bool kept = window_may_meet(*w, {{d}, {{0, 0, 0}}});
+    if (in) {
+      ++inside;
+      EXPECT_TRUE(kept) << d.x << " " << d.y << " " << d.z;
+    }
+    ruled_out += !kept;
+  }
+  for (const Point3& d : {Point3{1, -1, -3}, Point3{0.5, -1, -3}, Point3{-2, -5, 1}, Point3{1, 0, 1}, Point3{4, 1, 1}}) {
+    EXPECT_TRUE(set.contains(v(d)));
+    EXPECT_TRUE(window_may_meet(*w, {{d}, {{0, 0, 0}}}));
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(ruled_out, 10000);  // most of the sphere is far from the set
+  // The frame's hole and the L's missing quarter are not ruled out (a cap holds them),
+  // but the far side is.
+  EXPECT_FALSE(window_may_meet(*w, {{{0, 0, -1}}, {{0, 0, 0}}}));
+}
+
+TEST(DirectionWindow, CoverKeepsToTheConvexCellThatHoldsTheSet) {
+  SphericalImage set;
+  set.add_face(face_through({{{-1, -1, 1}, {1, -1, 1}, {1, 0, 1}, {0, 0, 1}, {0, 1, 1}, {-1, 1, 1}}}));
+  sphere::Face square = face_through({{{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}});
+  square.convex = true;
+  const std::optional<DirectionWindow> capped = DirectionWindow::covering(set, {}, kBound);
+  const std::optional<DirectionWindow> within = DirectionWindow::covering(set, square, kBound);
+  ASSERT_TRUE(capped && within);
+  // Beside the square, inside the L's cap: only the second window rules it out.
+  const Point3 beside{1.05, 0, 1};
+  EXPECT_TRUE(window_may_meet(*capped, {{beside}, {{0, 0, 0}}}));
+  EXPECT_FALSE(window_may_meet(*within, {{beside}, {{0, 0, 0}}}));
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> coord(-1.2, 1.2);
+  for (int t = 0; t < 5000; ++t) {
+    const Point3 d{coord(rng), coord(rng), 1};
+    if (set.contains(v(d))) EXPECT_TRUE(window_may_meet(*within, {{d}, {{0, 0, 0}}}));
+  }
+}
+
+TEST(DirectionWindow, NoCoverForFacesNoSmallCapHolds) {
+  // Bounded by a full circle.
+  EXPECT_FALSE(DirectionWindow::covering(SphericalImage::hemisphere(v(0, 0, 1)), {}, kBound));
+  // Everything but a small square: its boundary lies in a small cap, the face does not.
+  SphericalImage outside;
+  outside.add_face(face_through({{{-1, 1, 4}, {1, 1, 4}, {1, -1, 4}, {-1, -1, 4}}}));
+  EXPECT_FALSE(DirectionWindow::covering(outside, {}, kBound));
+  // A band around the equator: no cap smaller than a hemisphere holds it.
+  SphericalImage band;
+  band.add_face(face_through({{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}},
+                              {{0, -1, 1}, {-1, 0, 1}, {0, 1, 1}, {1, 0, 1}}}));
+  EXPECT_FALSE(DirectionWindow::covering(band, {}, kBound));
+  EXPECT_FALSE(DirectionWindow::covering(SphericalImage::full_sphere(), {}, kBound));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "sphere/d3.h"
 
@@ -12,22 +13,29 @@ using namespace sphere;  // D3
 
 }  // namespace
 
-DirectionWindow::DirectionWindow(const sphere::SphericalImage& lvm, double coordinate_bound)
+DirectionWindow::DirectionWindow(double coordinate_bound)
     // Each value m . q is off by about 1e-15 * coordinate_bound (rounding, and m being a
     // rounded unit vector); the slack is far above that and far below any real margin.
-    : slack_(1e-9 * coordinate_bound) {
+    : slack_(1e-9 * coordinate_bound) {}
+
+DirectionWindow::DirectionWindow(const sphere::SphericalImage& lvm, double coordinate_bound)
+    : DirectionWindow(coordinate_bound) {
   if (lvm.is_full_sphere()) return;
-  auto end_cell = [&] { cell_end_.push_back(normals_.size()); };
   // A convex 2-cell is the intersection of the hemispheres of its arcs.
   for (const sphere::Face& f : lvm.faces()) {
     for (const sphere::Loop& loop : f.loops) {
       for (const sphere::Arc& arc : loop.arcs) normals_.push_back(arc.normal.unit());
     }
-    end_cell();
+    cell_end_.push_back(normals_.size());
   }
+  add_lower_dimensional(lvm);
+}
+
+void DirectionWindow::add_lower_dimensional(const sphere::SphericalImage& set) {
+  auto end_cell = [&] { cell_end_.push_back(normals_.size()); };
   // An arc lies on its circle and, when shorter than 180 degrees, on the forward side of
   // its start and the backward side of its end.
-  for (const sphere::Arc& arc : lvm.curves()) {
+  for (const sphere::Arc& arc : set.curves()) {
     const D3 n = arc.normal.unit();
     normals_.push_back(n);
     normals_.push_back(negated(n));
@@ -42,13 +50,66 @@ DirectionWindow::DirectionWindow(const sphere::SphericalImage& lvm, double coord
     end_cell();
   }
   // A point lies on two orthogonal circles through it and in its own hemisphere.
-  for (const exact::ExactVec& p : lvm.points()) {
+  for (const exact::ExactVec& p : set.points()) {
     const D3 u = p.unit();
     const D3 helper = std::fabs(u[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
     const D3 n1 = normalized(cross(u, helper)), n2 = cross(u, n1);
     for (const D3& m : {n1, negated(n1), n2, negated(n2), u}) normals_.push_back(m);
     end_cell();
   }
+}
+
+void DirectionWindow::add_cap(const D3& centre, double radius, const sphere::Face& within) {
+  // For t orthogonal to the centre c, m = sin(r) c - cos(r) t gives m . x >= 0 for every x
+  // within r of c: m . x >= sin(r) cos(r) - cos(r) sin(r) = 0.
+  const D3 helper = std::fabs(centre[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
+  const D3 t1 = normalized(cross(centre, helper)), t2 = cross(centre, t1);
+  const double s = std::sin(radius), c = std::cos(radius);
+  for (const D3& t : {t1, negated(t1), t2, negated(t2)}) {
+    normals_.push_back(normalized(add(D3{s * centre[0], s * centre[1], s * centre[2]}, t, -c)));
+  }
+  for (const sphere::Loop& loop : within.loops) {
+    for (const sphere::Arc& arc : loop.arcs) normals_.push_back(arc.normal.unit());
+  }
+  cell_end_.push_back(normals_.size());
+}
+
+std::optional<DirectionWindow> DirectionWindow::covering(const sphere::SphericalImage& set,
+                                                         const sphere::Face& within, double coordinate_bound) {
+  if (set.is_full_sphere()) return std::nullopt;
+  DirectionWindow window(coordinate_bound);
+  // The estimates are within 1e-15 of the exact directions and the normals' rounding moves
+  // the half-spaces by as little: a margin of 1e-7 radians covers both.
+  constexpr double kMargin = 1e-7, kLargest = 1.5;  // radians; 1.5 < pi / 2
+  for (const sphere::Face& f : set.faces()) {
+    std::vector<D3> corners;
+    for (const sphere::Loop& loop : f.loops) {
+      for (const sphere::Arc& arc : loop.arcs) {
+        // Only arcs certainly shorter than 180 degrees stay in a cap with their ends.
+        const exact::UnitEstimate a = exact::unit_estimate(arc.start), b = exact::unit_estimate(arc.end);
+        if (arc.full || !(a.radius < 1e-12 && b.radius < 1e-12)) return std::nullopt;
+        if (!(dot(cross(a.unit, b.unit), arc.normal.unit()) > 1e-9)) return std::nullopt;
+        corners.push_back(a.unit);
+      }
+    }
+    D3 sum{0, 0, 0};
+    for (const D3& x : corners) sum = add(sum, x);
+    if (!(norm(sum) > 1e-3)) return std::nullopt;
+    const D3 centre = normalized(sum);
+    double radius = 0;
+    for (const D3& x : corners) radius = std::max(radius, std::atan2(norm(cross(centre, x)), dot(centre, x)));
+    radius += kMargin;
+    if (!(radius < kLargest)) return std::nullopt;
+    // The boundary lies in the cap (each arc is shorter than 180 degrees and the cap is
+    // convex), so the face is the cap's inside or holds everything outside it, the
+    // antipode of its centre included.
+    if (sphere::face_contains(f, exact::ExactVec::from_point({-centre[0], -centre[1], -centre[2]}))) {
+      return std::nullopt;
+    }
+    window.add_cap(centre, radius, within);
+  }
+  window.add_lower_dimensional(set);
+  return window;
 }
 
 void DirectionWindow::values(const Point3& x, double* out) const {

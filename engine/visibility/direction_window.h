@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,6 +26,13 @@ class DirectionWindow {
  public:
   // coordinate_bound: at least the largest absolute coordinate of any point used below.
   DirectionWindow(const sphere::SphericalImage& lvm, double coordinate_bound);
+  // A window around a closed set whose 2-cells need not be convex (what is left of the
+  // LVM outside some occluded directions): each 2-cell is covered by four half-spaces
+  // around a cap that holds it, and by the half-spaces of `within` (a convex 2-cell that
+  // holds the set, or empty). None when a 2-cell lies in no cap smaller than a
+  // hemisphere, or is bounded by a full circle.
+  static std::optional<DirectionWindow> covering(const sphere::SphericalImage& set, const sphere::Face& within,
+                                                 double coordinate_bound);
 
   // Number of half-spaces (0: the window holds every direction).
   size_t size() const { return normals_.size(); }
@@ -40,6 +48,13 @@ class DirectionWindow {
                                bool largest) const;
 
  private:
+  explicit DirectionWindow(double coordinate_bound);
+  // The cells of the set's arcs and points.
+  void add_lower_dimensional(const sphere::SphericalImage& set);
+  // A cell of four half-spaces holding the cap of directions within `radius` (< 90
+  // degrees) of the unit vector `centre`.
+  void add_cap(const std::array<double, 3>& centre, double radius, const sphere::Face& within);
+
   std::vector<std::array<double, 3>> normals_;
   std::vector<size_t> cell_end_;  // half-spaces of cell c: [cell_end_[c - 1], cell_end_[c])
   double slack_ = 0;

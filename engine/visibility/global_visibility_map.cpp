@@ -13,7 +13,9 @@
 
 #include "exact/interrupt.h"
 #include "sphere/arrangement.h"
+#include "sphere/d3.h"
 #include "sphere/image_overlay.h"
+#include "sphere/region_union.h"
 #include "visibility/clip_window.h"
 #include "visibility/convex_decomposition.h"
 #include "visibility/direction_window.h"
@@ -103,12 +105,14 @@ struct Occlusion {
 };
 
 // The closure of the occluded directions by the effective Minkowski envelope (paper
-// Sec. 4): the envelope's faces are the cells, a group's arcs its border chain.
-Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
-                             std::span<const uint32_t> o, const sphere::SphericalImage& lvm,
-                             const DirectionWindow& window,
-                             std::span<const ClipWindow> clip, std::vector<ExactVec>& circles,
-                             const std::vector<ExactVec>& points, GlobalOcclusionStatistics* stats) {
+// Sec. 4): the envelope's faces are the cells, a group's arcs its border chain. It is
+// right near `needed` (within the LVM), which the window holds. With a reference
+// given, none when that lies on one of the cells' circles.
+std::optional<Occlusion> envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
+                                            std::span<const uint32_t> o, const sphere::SphericalImage& needed,
+                                            const DirectionWindow& window, std::span<const ClipWindow> clip,
+                                            std::vector<ExactVec>& circles, const std::vector<ExactVec>& points,
+                                            GlobalOcclusionStatistics* stats, const ExactVec* reference = nullptr) {
   const EffectiveMinkowskiEnvelope eme =
       compute_effective_minkowski_envelope(mesh, s, o, /*keep_faces=*/true, &window);
   spdlog::debug("global occlusion: |S| {} |O| {}: {} tentative faces ({} outside the LVM), {} kept, "
@@ -134,6 +138,7 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
   // decides. Their sides are the circles the reference must avoid, with the windows'
   // (the unions hold no other faces).
   std::vector<OpenCells::Cell> open;
+  const size_t circles_before = circles.size();
   for (size_t i = 0; i < faces.size(); ++i) {
     interruptions.tick();
     if (redundant[i]) continue;
@@ -143,7 +148,11 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     open.push_back({faces[i], std::move(n)});
   }
   for (const ClipWindow& w : clip) circles.insert(circles.end(), w.normals().begin(), w.normals().end());
-  const ExactVec r = sphere::generic_direction(circles, points);
+  if (reference && std::any_of(circles.begin() + circles_before, circles.end(),
+                               [&](const ExactVec& n) { return exact::sign_dot(n, *reference) == Sign::kZero; })) {
+    return std::nullopt;
+  }
+  const ExactVec r = reference ? *reference : sphere::generic_direction(circles, points);
   auto union_of = [&](std::span<const uint32_t> subset) {
     OccludingCells cells;
     cells.count = subset.size();
@@ -173,11 +182,84 @@ Occlusion envelope_occlusion(const SolidMesh& mesh, std::span<const uint32_t> s,
     return occluded_directions(cells, r);
   };
   TieredUnionStatistics tiers;
-  sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers, {}, &lvm);
+  sphere::Region region = union_by_tiers(faces, kept, clip, union_of, r, &tiers, {}, &needed);
   spdlog::debug("global occlusion: {} faces in {} tiers, {} inside the union of the tiers before theirs or "
                 "missing what it leaves of the LVM",
                 tiers.faces, tiers.tiers, tiers.left_out);
-  return {std::move(region), r, OpenCells(std::move(open))};
+  return Occlusion{std::move(region), r, OpenCells(std::move(open))};
+}
+
+// The occluders seen under the largest solid angles from S's centre (twice the area over
+// the squared distance of the centroid), ascending.
+std::vector<uint32_t> nearest_occluders(const SolidMesh& mesh, std::span<const uint32_t> s,
+                                        std::span<const uint32_t> o, size_t count) {
+  using sphere::D3;
+  auto point = [&](uint32_t v) { return D3{mesh.points[v].x, mesh.points[v].y, mesh.points[v].z}; };
+  D3 centre{0, 0, 0};
+  for (uint32_t t : s) {
+    for (uint32_t v : mesh.triangles[t]) centre = sphere::add(centre, point(v), 1.0 / (3 * s.size()));
+  }
+  std::vector<std::pair<double, uint32_t>> scored;
+  for (uint32_t t : o) {
+    const Triangle& tri = mesh.triangles[t];
+    const D3 a = point(tri[0]), b = point(tri[1]), c = point(tri[2]);
+    const double area = sphere::norm(sphere::cross(sphere::add(b, a, -1), sphere::add(c, a, -1)));
+    const D3 away = sphere::add(sphere::add(sphere::add(a, b), c), centre, -3);
+    scored.emplace_back(-area / (sphere::dot(away, away) / 9 + 1e-300), t);
+  }
+  count = std::min(count, scored.size());
+  std::partial_sort(scored.begin(), scored.begin() + count, scored.end());
+  std::vector<uint32_t> out;
+  for (size_t i = 0; i < count; ++i) out.push_back(scored[i].second);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The closure in two passes where O is large. A first pass over the nearest occluders
+// gives Q' within the closure Q (fewer occluders block fewer directions) and leaves
+// V' = LVM - Int(Q'), often a small part of the LVM (TR12J's thread flanks: a tenth of a
+// quarter sphere); the second keeps only the envelope faces near V'. Merged, Q' and the
+// second union are Q on the LVM: outside V' the interior of Q' covers it, and near V' the
+// second union is Q (a face left out lies at a positive distance from V'). The seams, the
+// open cells and the probe still cover the whole LVM, so directions inside Int(Q') that
+// grazing rays reach are found as before. One pass where the first leaves half of the
+// LVM or more, or V' has no cover by caps.
+Occlusion envelope_occlusion_in_passes(const SolidMesh& mesh, std::span<const uint32_t> s,
+                                       std::span<const uint32_t> o, const sphere::SphericalImage& lvm,
+                                       const DirectionWindow& window, std::span<const ClipWindow> clip,
+                                       std::vector<ExactVec>& circles, const std::vector<ExactVec>& points,
+                                       GlobalOcclusionStatistics* stats) {
+  // Measured on the shared parts (README, "A window from a first bound"): below 2,048
+  // occluders the first pass costs more than the second saves on the Prusa parts.
+  constexpr size_t kLargeO = 2048, kFirstPass = 64;
+  constexpr double kLeftAtMost = 0.5;
+  auto one_pass = [&] { return *envelope_occlusion(mesh, s, o, lvm, window, clip, circles, points, stats); };
+  // An arc or a point of an LVM is a window as narrow as any.
+  if (o.size() < kLargeO || lvm.dimension() < 2) return one_pass();
+  std::optional<Occlusion> first = envelope_occlusion(mesh, s, nearest_occluders(mesh, s, o, kFirstPass), lvm,
+                                                      window, clip, circles, points, stats);
+  const sphere::SphericalImage left = sphere::outside_interior(lvm, first->region, first->reference);
+  spdlog::debug("global occlusion: the {} nearest occluders leave {:.4g} of the LVM's {:.4g} sr", kFirstPass,
+                left.area(), lvm.area());
+  if (stats) stats->first_pass_occluders = kFirstPass;
+  if (left.is_empty()) return std::move(*first);
+  // The LVM is convex: one convex 2-cell.
+  const sphere::Face within = lvm.faces().size() == 1 && lvm.faces()[0].convex ? lvm.faces()[0] : sphere::Face{};
+  const std::optional<DirectionWindow> narrow =
+      left.area() < kLeftAtMost * lvm.area() ? DirectionWindow::covering(left, within, coordinate_bound(mesh, s, o))
+                                             : std::nullopt;
+  std::optional<Occlusion> second =
+      narrow ? envelope_occlusion(mesh, s, o, left, *narrow, clip, circles, points, stats, &first->reference)
+             : std::nullopt;
+  if (!second) {
+    if (stats) stats->first_pass_occluders = 0;
+    return one_pass();
+  }
+  const uint64_t work = first->region.arrangement_vertices + second->region.arrangement_vertices;
+  second->region = sphere::region_union({std::move(second->region), std::move(first->region)}, first->reference);
+  second->region.arrangement_vertices += work;
+  second->cells.absorb(std::move(first->cells));
+  return std::move(*second);
 }
 
 // The same closure by convex decomposition: the pairwise occlusion maps are the cells.
@@ -333,7 +415,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const auto union_start = std::chrono::steady_clock::now();
   auto [occluded, r, open_cells] =
       method == OcclusionMethod::kEffectiveMinkowskiEnvelope
-          ? envelope_occlusion(mesh, s, beam, lvm, window, clip, circles, point_dirs, stats)
+          ? envelope_occlusion_in_passes(mesh, s, beam, lvm, window, clip, circles, point_dirs, stats)
           : convex_decomposition_occlusion(mesh, s, beam, window, circles, point_dirs, stats);
   spdlog::debug("global occlusion: closure of the occluded directions: {} boundary arcs, {:.2f} s",
                 occluded.boundary.size(),

@@ -27,6 +27,7 @@ enum class OcclusionMethod {
 
 struct GlobalOcclusionStatistics {
   uint64_t occluders_in_beam = 0;       // faces of O_S that can meet S near the LVM
+  uint64_t first_pass_occluders = 0;    // of those, the nearest, when the closure took two passes
   EnvelopeStatistics envelope;           // with the envelope
   ConvexDecompositionStatistics convex;  // with convex decomposition
   uint64_t occluded_boundary_arcs = 0;   // boundary of the closure of Phi(O_S + (-S)), as computed (occlusion_culling.h)

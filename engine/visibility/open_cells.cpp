@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <iterator>
+
 #include "sphere/arc_intervals.h"
 
 namespace gvm {
@@ -46,6 +48,12 @@ sphere::Box box_of(const OpenCells::Cell& c) {
 }
 
 }  // namespace
+
+void OpenCells::absorb(OpenCells&& other) {
+  cells_.insert(cells_.end(), std::make_move_iterator(other.cells_.begin()),
+                std::make_move_iterator(other.cells_.end()));
+  tree_.reset();
+}
 
 void OpenCells::index() {
   std::vector<sphere::Box> boxes(cells_.size());

@@ -29,6 +29,9 @@ class OpenCells {
   };
   explicit OpenCells(std::vector<Cell> cells) : cells_(std::move(cells)) {}
 
+  // Adds the cells of `other` (of the same S and the same solid).
+  void absorb(OpenCells&& other);
+
   // Whether one cell holds direction u in its open inside.
   bool hold(const exact::ExactVec& u);
   // The closed pieces of an open arc (shorter than 180 degrees) outside the open insides
