@@ -44,6 +44,7 @@ SurfaceMaps surface_maps(const SolidMesh& mesh, SurfaceVisibility vis, double se
   s.envelope_border_arcs = g.envelope.border_edges;
   s.envelope_faces = g.envelope.envelope_faces;
   s.envelope_patches = g.envelope.patches;
+  s.first_pass_occluders = g.first_pass_occluders;
   s.pairwise_maps = g.convex.maps;
   s.pairwise_map_arcs = g.convex.map_arcs;
   s.arrangement_vertices = g.arrangement_vertices;

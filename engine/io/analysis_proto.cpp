@@ -24,6 +24,7 @@ void fill_info(const SurfaceMaps& maps, v1::SurfaceInfo* info) {
     info->set_envelope_border_arcs(s.envelope_border_arcs);
     info->set_envelope_faces(s.envelope_faces);
     info->set_envelope_patches(s.envelope_patches);
+    info->set_first_pass_occluders(s.first_pass_occluders);
   }
   if (s.pairwise_ran) {
     info->set_pairwise_maps(s.pairwise_maps);

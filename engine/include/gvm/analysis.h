@@ -57,6 +57,7 @@ struct SurfaceStatistics {
   uint32_t neighbor_occluders = 0;   // |N_S| in input faces
   uint32_t potential_occluders = 0;  // |O_S| in input faces
   uint64_t envelope_border_arcs = 0, envelope_faces = 0, envelope_patches = 0;
+  uint64_t first_pass_occluders = 0;  // triangles; 0 when the closure took one pass
   uint64_t pairwise_maps = 0, pairwise_map_arcs = 0;
   uint64_t arrangement_vertices = 0, occluded_boundary_arcs = 0;
   bool envelope_ran = false;         // the effective Minkowski envelope was computed
