@@ -11,7 +11,20 @@ namespace {
 
 using namespace sphere;  // D3
 
+// Two unit vectors orthogonal to the unit vector u and to each other.
+std::array<D3, 2> orthonormal_to(const D3& u) {
+  const D3 helper = std::fabs(u[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
+  const D3 n1 = normalized(cross(u, helper));
+  return {n1, cross(u, n1)};
+}
+
 }  // namespace
+
+void DirectionWindow::add_half_spaces(const sphere::Face& convex) {
+  for (const sphere::Loop& loop : convex.loops) {
+    for (const sphere::Arc& arc : loop.arcs) normals_.push_back(arc.normal.unit());
+  }
+}
 
 DirectionWindow::DirectionWindow(double coordinate_bound)
     // Each value m . q is off by about 1e-15 * coordinate_bound (rounding, and m being a
@@ -23,9 +36,7 @@ DirectionWindow::DirectionWindow(const sphere::SphericalImage& lvm, double coord
   if (lvm.is_full_sphere()) return;
   // A convex 2-cell is the intersection of the hemispheres of its arcs.
   for (const sphere::Face& f : lvm.faces()) {
-    for (const sphere::Loop& loop : f.loops) {
-      for (const sphere::Arc& arc : loop.arcs) normals_.push_back(arc.normal.unit());
-    }
+    add_half_spaces(f);
     cell_end_.push_back(normals_.size());
   }
   add_lower_dimensional(lvm);
@@ -52,8 +63,7 @@ void DirectionWindow::add_lower_dimensional(const sphere::SphericalImage& set) {
   // A point lies on two orthogonal circles through it and in its own hemisphere.
   for (const exact::ExactVec& p : set.points()) {
     const D3 u = p.unit();
-    const D3 helper = std::fabs(u[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
-    const D3 n1 = normalized(cross(u, helper)), n2 = cross(u, n1);
+    const auto [n1, n2] = orthonormal_to(u);
     for (const D3& m : {n1, negated(n1), n2, negated(n2), u}) normals_.push_back(m);
     end_cell();
   }
@@ -62,15 +72,12 @@ void DirectionWindow::add_lower_dimensional(const sphere::SphericalImage& set) {
 void DirectionWindow::add_cap(const D3& centre, double radius, const sphere::Face& within) {
   // For t orthogonal to the centre c, m = sin(r) c - cos(r) t gives m . x >= 0 for every x
   // within r of c: m . x >= sin(r) cos(r) - cos(r) sin(r) = 0.
-  const D3 helper = std::fabs(centre[0]) < 0.6 ? D3{1, 0, 0} : D3{0, 1, 0};
-  const D3 t1 = normalized(cross(centre, helper)), t2 = cross(centre, t1);
+  const auto [t1, t2] = orthonormal_to(centre);
   const double s = std::sin(radius), c = std::cos(radius);
   for (const D3& t : {t1, negated(t1), t2, negated(t2)}) {
     normals_.push_back(normalized(add(D3{s * centre[0], s * centre[1], s * centre[2]}, t, -c)));
   }
-  for (const sphere::Loop& loop : within.loops) {
-    for (const sphere::Arc& arc : loop.arcs) normals_.push_back(arc.normal.unit());
-  }
+  add_half_spaces(within);
   cell_end_.push_back(normals_.size());
 }
 

@@ -49,6 +49,8 @@ class DirectionWindow {
 
  private:
   explicit DirectionWindow(double coordinate_bound);
+  // The hemispheres of a convex 2-cell's arcs, whose intersection it is.
+  void add_half_spaces(const sphere::Face& convex);
   // The cells of the set's arcs and points.
   void add_lower_dimensional(const sphere::SphericalImage& set);
   // A cell of four half-spaces holding the cap of directions within `radius` (< 90

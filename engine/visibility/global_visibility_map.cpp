@@ -239,15 +239,16 @@ Occlusion envelope_occlusion_in_passes(const SolidMesh& mesh, std::span<const ui
   std::optional<Occlusion> first = envelope_occlusion(mesh, s, nearest_occluders(mesh, s, o, kFirstPass), lvm,
                                                       window, clip, circles, points, stats);
   const sphere::SphericalImage left = sphere::outside_interior(lvm, first->region, first->reference);
+  const double left_area = left.area(), lvm_area = lvm.area();
   spdlog::debug("global occlusion: the {} nearest occluders leave {:.4g} of the LVM's {:.4g} sr", kFirstPass,
-                left.area(), lvm.area());
+                left_area, lvm_area);
   if (stats) stats->first_pass_occluders = kFirstPass;
   if (left.is_empty()) return std::move(*first);
   // The LVM is convex: one convex 2-cell.
   const sphere::Face within = lvm.faces().size() == 1 && lvm.faces()[0].convex ? lvm.faces()[0] : sphere::Face{};
   const std::optional<DirectionWindow> narrow =
-      left.area() < kLeftAtMost * lvm.area() ? DirectionWindow::covering(left, within, coordinate_bound(mesh, s, o))
-                                             : std::nullopt;
+      left_area < kLeftAtMost * lvm_area ? DirectionWindow::covering(left, within, coordinate_bound(mesh, s, o))
+                                         : std::nullopt;
   std::optional<Occlusion> second =
       narrow ? envelope_occlusion(mesh, s, o, left, *narrow, clip, circles, points, stats, &first->reference)
              : std::nullopt;
