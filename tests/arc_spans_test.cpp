@@ -220,9 +220,20 @@ TEST(ArcSpans, DirectionsInOrderAlongAnArcAsTheExactSortGivesThem) {
     }
     std::sort(expected.begin(), expected.end(), [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); });
     expected.erase(std::unique(expected.begin(), expected.end(), exact::same_direction), expected.end());
-    const std::vector<ExactVec> found = in_order_along(arc, directions);
+    const std::vector<std::vector<uint32_t>> found = in_order_along(arc, directions);
     ASSERT_EQ(found.size(), expected.size());
-    for (size_t k = 0; k < found.size(); ++k) ASSERT_TRUE(exact::same_direction(found[k], expected[k])) << k;
+    std::vector<int> listed(directions.size(), 0);
+    for (size_t k = 0; k < found.size(); ++k) {
+      for (uint32_t i : found[k]) {
+        ASSERT_TRUE(exact::same_direction(directions[i], expected[k])) << k;
+        ++listed[i];
+      }
+    }
+    // Every direction inside the open arc is in exactly one group.
+    for (size_t i = 0; i < directions.size(); ++i) {
+      const bool inside = order.before(arc.start, directions[i]) && order.before(directions[i], arc.end);
+      EXPECT_EQ(listed[i], inside ? 1 : 0) << i;
+    }
   }
 }
 

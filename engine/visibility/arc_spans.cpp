@@ -160,18 +160,30 @@ std::vector<uint32_t> spans_that_matter(const ArcSpans& arc, const std::vector<A
   return out;
 }
 
-std::vector<ExactVec> in_order_along(const sphere::Arc& open_arc, std::vector<ExactVec> directions) {
+std::vector<std::vector<uint32_t>> in_order_along(const sphere::Arc& open_arc,
+                                                  const std::vector<ExactVec>& directions) {
   constexpr double kTie = 1e-8;  // far above the angles' errors (ArcSpans::kEndError and less)
   const sphere::ArcOrder order{open_arc.normal};
-  auto before = [&](const ExactVec& x, const ExactVec& y) { return order.before(x, y); };
-  auto same = [](const ExactVec& x, const ExactVec& y) { return exact::same_direction(x, y); };
-  auto inside = [&](const ExactVec& d) { return before(open_arc.start, d) && before(d, open_arc.end); };
-  auto all_exact = [&] {
-    std::vector<ExactVec> out;
-    std::copy_if(directions.begin(), directions.end(), std::back_inserter(out), inside);
-    std::sort(out.begin(), out.end(), before);
-    out.erase(std::unique(out.begin(), out.end(), same), out.end());
+  auto before = [&](uint32_t x, uint32_t y) { return order.before(directions[x], directions[y]); };
+  auto inside = [&](uint32_t i) {
+    return order.before(open_arc.start, directions[i]) && order.before(directions[i], open_arc.end);
+  };
+  // Equal directions are neighbours once sorted: one group each.
+  auto grouped = [&](const std::vector<uint32_t>& sorted) {
+    std::vector<std::vector<uint32_t>> out;
+    for (uint32_t i : sorted) {
+      if (out.empty() || !exact::same_direction(directions[out.back()[0]], directions[i])) out.emplace_back();
+      out.back().push_back(i);
+    }
     return out;
+  };
+  auto all_exact = [&] {
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < directions.size(); ++i) {
+      if (inside(i)) out.push_back(i);
+    }
+    std::sort(out.begin(), out.end(), before);
+    return grouped(out);
   };
   const ArcSpans frame(open_arc);
   if (!frame.usable()) return all_exact();
@@ -181,12 +193,12 @@ std::vector<ExactVec> in_order_along(const sphere::Arc& open_arc, std::vector<Ex
     if (!(u.radius <= 1e-12)) return all_exact();
     const double a = frame.angle(u.unit);
     if (a < frame.start() - kTie || a > frame.end() + kTie) continue;
-    if ((a < frame.start() + kTie || a > frame.end() - kTie) && !inside(directions[i])) continue;
+    if ((a < frame.start() + kTie || a > frame.end() - kTie) && !inside(i)) continue;
     keyed.emplace_back(a, i);
   }
   std::sort(keyed.begin(), keyed.end());
-  std::vector<ExactVec> out;
-  for (const auto& [a, i] : keyed) out.push_back(directions[i]);
+  std::vector<uint32_t> out;
+  for (const auto& [a, i] : keyed) out.push_back(i);
   // Runs of angles less than kTie apart hold every pair the angles may misorder.
   for (size_t b = 0; b < keyed.size();) {
     size_t e = b + 1;
@@ -194,8 +206,7 @@ std::vector<ExactVec> in_order_along(const sphere::Arc& open_arc, std::vector<Ex
     if (e - b > 1) std::sort(out.begin() + b, out.begin() + e, before);
     b = e;
   }
-  out.erase(std::unique(out.begin(), out.end(), same), out.end());
-  return out;
+  return grouped(out);
 }
 
 }  // namespace gvm

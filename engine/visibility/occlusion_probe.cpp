@@ -370,7 +370,12 @@ OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in
   const size_t K = window.size();
   const std::vector<double> o_max = window.extremes(mesh_, o_, true);
   Strips strips;
-  tbb::concurrent_vector<ExactVec> lines;
+  struct Found {
+    StripEvent event;
+    uint32_t plane, triangle;  // the triangle of O it comes from
+  };
+  tbb::concurrent_vector<Found> found;
+  uint32_t plane_index = 0;
   for (const auto& [plane, triangles] : strip_planes(mesh_, in_plane)) {
     const WindowRows s_min(&window, triangles.size(), window.extremes(mesh_, triangles, false),
                            WindowRows::Side::surface);
@@ -383,23 +388,40 @@ OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in
       });
       if (near.empty() || !touches(mesh_, plane, o_[oi])) return;
       for (uint32_t fs : near) pairs.emplace_back(fs, o_[oi]);
-      std::vector<ExactVec> mine;
+      std::vector<StripEvent> mine;
       add_strip_events(mesh_, plane, o_[oi], mine);
-      for (ExactVec& d : mine) lines.push_back(std::move(d));
+      for (StripEvent& e : mine) found.push_back({std::move(e), plane_index, o_[oi]});
     });
     interruption_point();
     strips.pairs.insert(strips.pairs.end(), pairs.begin(), pairs.end());
+    ++plane_index;
   }
   for (auto [fs, ft] : strips.pairs) {
     const Corners c = corners(mesh_, fs);
     strips.plane_normals.push_back(exact::unit_estimate(exact::cross(c[1] - c[0], c[2] - c[0])));
   }
+  // One line per construction, with every triangle that has it (most events are shared),
+  // then in order along the arc, both ways round; equal lines built apart meet there.
+  std::vector<Found> events(found.begin(), found.end());
+  std::sort(events.begin(), events.end(), [](const Found& x, const Found& y) {
+    return std::tie(x.plane, x.event.key, x.triangle) < std::tie(y.plane, y.event.key, y.triangle);
+  });
   std::vector<ExactVec> both;
-  for (const ExactVec& line : lines) {
-    both.push_back(line);
-    both.push_back(-line);
+  std::vector<std::vector<uint32_t>> sources;  // of each line
+  for (size_t i = 0; i < events.size(); ++i) {
+    if (i == 0 || events[i].plane != events[i - 1].plane || events[i].event.key != events[i - 1].event.key) {
+      both.push_back(events[i].event.line);
+      both.push_back(-events[i].event.line);
+      sources.emplace_back();
+    }
+    sources.back().push_back(events[i].triangle);
   }
-  strips.events = in_order_along(open_arc, std::move(both));
+  for (const std::vector<uint32_t>& equal : in_order_along(open_arc, both)) {
+    strips.events.push_back(both[equal[0]]);
+    std::vector<uint32_t>& at = strips.event_sources.emplace_back();
+    for (uint32_t i : equal) at.insert(at.end(), sources[i / 2].begin(), sources[i / 2].end());
+    std::sort(at.begin(), at.end());
+  }
   return strips;
 }
 
@@ -421,12 +443,20 @@ bool OcclusionProbe::Strips::block(const OcclusionProbe& probe, const ExactVec& 
   return true;
 }
 
+bool OcclusionProbe::Strips::changes_at(size_t e, size_t i) const {
+  return std::binary_search(event_sources[e].begin(), event_sources[e].end(), pairs[i].second);
+}
+
 void OcclusionProbe::decide_between_events(const sphere::Arc& piece, const sphere::Arc& open_arc,
                                            const Strips& strips, std::vector<sphere::Arc>& out) const {
   const ArcOrder order{open_arc.normal};
   std::vector<ExactVec> at{piece.start};
-  for (const ExactVec& e : strips.events) {
-    if (order.before(piece.start, e) && order.before(e, piece.end)) at.push_back(e);
+  std::vector<size_t> event;  // of at[i + 1], for i + 2 < at.size()
+  for (size_t e = 0; e < strips.events.size(); ++e) {
+    if (order.before(piece.start, strips.events[e]) && order.before(strips.events[e], piece.end)) {
+      at.push_back(strips.events[e]);
+      event.push_back(e);
+    }
   }
   at.push_back(piece.end);
   // No prism blocks the piece, so only the strips can. The visible set is closed (the
@@ -434,17 +464,33 @@ void OcclusionProbe::decide_between_events(const sphere::Arc& piece, const spher
   // little), so a visible stretch between events brings its ends along; an event is
   // otherwise visible on its own. The ends of the whole arc are not in it (the caller
   // decides them).
+  // A pair's answer only changes at its triangle's events, so the pair that blocks a
+  // stretch blocks the event after it, and the stretch after that, unless the event is one
+  // of its own (TR12J F234: 6,000 events per arc, 8,000 pairs to search for each).
+  constexpr size_t kVisible = SIZE_MAX;
   size_t last = 0;
-  std::vector<bool> between(at.size() - 1);
-  for (size_t i = 0; i + 1 < at.size(); ++i) between[i] = !strips.block(*this, at[i] + at[i + 1], last);
+  std::vector<size_t> blocker(at.size() - 1, kVisible);  // of each stretch
+  auto kept_across = [&](size_t i, size_t stretch) {  // blocker[stretch] blocks at[i] too
+    return blocker[stretch] != kVisible && !strips.changes_at(event[i - 1], blocker[stretch]);
+  };
+  for (size_t i = 0; i + 1 < at.size(); ++i) {
+    if (i > 0 && kept_across(i, i - 1)) {
+      blocker[i] = blocker[i - 1];
+    } else if (strips.block(*this, at[i] + at[i + 1], last)) {
+      blocker[i] = last;
+    }
+  }
+  auto between = [&](size_t stretch) { return blocker[stretch] == kVisible; };
   for (size_t i = 0; i < at.size(); ++i) {
-    const bool before = i > 0 && between[i - 1], after = i + 1 < at.size() && between[i];
+    const bool before = i > 0 && between(i - 1), after = i + 1 < at.size() && between(i);
+    const bool inner = i > 0 && i + 1 < at.size();  // at[i] is an event, not an end of the piece
     if (after && before) {
       out.back().end = at[i + 1];  // the stretch goes on
     } else if (after) {
       out.push_back({at[i], at[i + 1], open_arc.normal});
-    } else if (!before && !exact::same_direction(at[i], open_arc.start) &&
-               !exact::same_direction(at[i], open_arc.end) && !strips.block(*this, at[i], last)) {
+    } else if (!before && !(inner && (kept_across(i, i - 1) || kept_across(i, i))) &&
+               !exact::same_direction(at[i], open_arc.start) && !exact::same_direction(at[i], open_arc.end) &&
+               !strips.block(*this, at[i], last)) {
       out.push_back({at[i], at[i], open_arc.normal});
     }
   }

@@ -70,8 +70,11 @@ class OcclusionProbe {
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     std::vector<exact::UnitEstimate> plane_normals;  // of each pair's triangle of S
     std::vector<exact::ExactVec> events;
+    std::vector<std::vector<uint32_t>> event_sources;  // the triangles of O with an event there
     // Whether some pair blocks u; `last` is the pair that blocked last (tried first, updated).
     bool block(const OcclusionProbe& probe, const exact::ExactVec& u, size_t& last) const;
+    // Whether what pair i answers may change at event e: one of its triangle's events.
+    bool changes_at(size_t e, size_t i) const;
   };
   Strips strips_along(std::span<const uint32_t> in_plane, const sphere::Arc& open_arc) const;
   // Appends the visible parts of `piece`, a closed sub-arc of open_arc that no prism

@@ -69,33 +69,40 @@ bool touches(const SolidMesh& mesh, const StripPlane& plane, uint32_t t) {
   return has(Sign::kZero) || (has(Sign::kPositive) && has(Sign::kNegative));
 }
 
-void add_strip_events(const SolidMesh& mesh, const StripPlane& plane, uint32_t t, std::vector<ExactVec>& out) {
+void add_strip_events(const SolidMesh& mesh, const StripPlane& plane, uint32_t t, std::vector<StripEvent>& out) {
+  enum Kind : uint32_t { kFacePlane, kCorner, kEdgeCrossing, kStarEdge };
   const Triangle& tri = mesh.triangles[t];
   const ExactVec& n = plane.normal;
   const std::array<Sign, 3> side = sides(mesh, plane, t);
   std::array<ExactVec, 3> q;
   for (int k = 0; k < 3; ++k) q[k] = point(mesh, tri[k]);
-  auto add = [&out](ExactVec d) {
-    if (!exact::is_zero(d)) out.push_back(std::move(d));
+  auto add = [&out](ExactVec d, std::array<uint32_t, 4> key) {
+    if (!exact::is_zero(d)) out.push_back({std::move(d), key});
   };
-  add(exact::cross(n, normal(mesh, t)));
-  for (int k = 0; k < 3; ++k) add(exact::cross(n, normal(mesh, mesh.neighbor[t][k])));
+  add(exact::cross(n, normal(mesh, t)), {kFacePlane, t, 0, 0});
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t across = mesh.neighbor[t][k];
+    add(exact::cross(n, normal(mesh, across)), {kFacePlane, across, 0, 0});
+  }
   for (uint32_t corner : plane.corners) {
     const ExactVec p = point(mesh, corner);
     for (int k = 0; k < 3; ++k) {
       const int j = (k + 1) % 3;
-      if (side[k] == Sign::kZero) add(q[k] - p);
+      if (side[k] == Sign::kZero) add(q[k] - p, {kCorner, tri[k], corner, 0});
       if (side[k] != Sign::kZero && side[j] != Sign::kZero && side[k] != side[j]) {
-        add(exact::cross(n, exact::cross(q[k] - p, q[j] - p)));
+        add(exact::cross(n, exact::cross(q[k] - p, q[j] - p)),
+            {kEdgeCrossing, std::min(tri[k], tri[j]), std::max(tri[k], tri[j]), corner});
       }
     }
   }
   for (int k = 0; k < 3; ++k) {
     if (side[k] != Sign::kZero) continue;
     for (uint32_t f : vertex_star(mesh, t, k)) {
-      add(exact::cross(n, normal(mesh, f)));
+      add(exact::cross(n, normal(mesh, f)), {kFacePlane, f, 0, 0});
       for (uint32_t a : mesh.triangles[f]) {
-        if (a != tri[k] && exact::sign_dot(n, point(mesh, a) - plane.origin) == Sign::kZero) add(point(mesh, a) - q[k]);
+        if (a != tri[k] && exact::sign_dot(n, point(mesh, a) - plane.origin) == Sign::kZero) {
+          add(point(mesh, a) - q[k], {kStarEdge, std::min(a, tri[k]), std::max(a, tri[k]), 0});
+        }
       }
     }
   }

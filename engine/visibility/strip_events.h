@@ -14,6 +14,7 @@
 // So on an arc of directions in P the answer is constant between consecutive events.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -42,9 +43,16 @@ std::vector<std::pair<StripPlane, std::vector<uint32_t>>> strip_planes(const Sol
 // strips in it never meet a triangle that does not.
 bool touches(const SolidMesh& mesh, const StripPlane& plane, uint32_t t);
 
-// Appends the events of triangle t (which touches the plane) as lines through the origin
-// in the plane: each direction d stands for d and -d; zero vectors are left out.
-void add_strip_events(const SolidMesh& mesh, const StripPlane& plane, uint32_t t,
-                      std::vector<exact::ExactVec>& out);
+// An event as a line through the origin in the plane (the direction stands for itself
+// and its opposite), with what it is built from: neighbouring triangles of O share most
+// of their events (a corner, an edge, a face of a star), and equal keys are equal lines,
+// found without exact arithmetic.
+struct StripEvent {
+  exact::ExactVec line;
+  std::array<uint32_t, 4> key;  // a kind, then the vertices or triangle it is built from
+};
+
+// Appends the events of triangle t (which touches the plane); zero vectors are left out.
+void add_strip_events(const SolidMesh& mesh, const StripPlane& plane, uint32_t t, std::vector<StripEvent>& out);
 
 }  // namespace gvm
