@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <span>
 
 #include "exact/predicates.h"
 #include "gvm/part.h"
@@ -31,6 +32,31 @@ std::vector<std::string> shared_parts() {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// O_S by conditions (i) and (ii) of Def. 5 over every pair of S and the part, no pruning.
+std::vector<uint32_t> occluders_by_definition(const Part& p, std::span<const uint32_t> s,
+                                              std::span<const uint32_t> n) {
+  const SolidMesh& m = p.mesh();
+  auto pt = [&](uint32_t t, int i) -> const Point3& { return m.points[m.triangles[t][i]]; };
+  std::vector<uint32_t> expect;
+  for (uint32_t c = 0; c < m.triangles.size(); ++c) {
+    if (p.is_hull(c) || std::binary_search(s.begin(), s.end(), c) || std::binary_search(n.begin(), n.end(), c))
+      continue;
+    bool found = false;
+    for (size_t i = 0; i < s.size() && !found; ++i) {
+      const uint32_t fs = s[i];
+      if (p.region_of(fs) != p.region_of(c)) continue;
+      bool c1 = false, c2 = false;
+      for (int k = 0; k < 3; ++k) {
+        c1 |= exact::orient3d(pt(c, 0), pt(c, 1), pt(c, 2), pt(fs, k)) == Sign::kPositive;
+        c2 |= exact::orient3d(pt(fs, 0), pt(fs, 1), pt(fs, 2), pt(c, k)) != Sign::kNegative;
+      }
+      found = c1 && c2;
+    }
+    if (found) expect.push_back(c);
+  }
+  return expect;
 }
 
 TEST(PartShared, EveryPartAnalyzes) {
@@ -96,32 +122,13 @@ TEST(PartShared, EveryPartAnalyzes) {
       EXPECT_EQ(wrong, 0u) << name;
 
       // O_S of a few non-hull features against the definition (no pruning).
-      auto pt = [&](uint32_t t, int i) -> const Point3& { return m.points[m.triangles[t][i]]; };
       int checked = 0;
       for (const Feature& f : p.features()) {
         if (f.on_hull || checked == 3) continue;
         ++checked;
-        const auto& s = f.triangles;
-        auto n = p.neighbor_occluders(s);
-        std::vector<uint32_t> expect;
-        for (uint32_t c = 0; c < nt; ++c) {
-          if (p.is_hull(c) || std::binary_search(s.begin(), s.end(), c) ||
-              std::binary_search(n.begin(), n.end(), c))
-            continue;
-          bool found = false;
-          for (size_t i = 0; i < s.size() && !found; ++i) {
-            const uint32_t fs = s[i];
-            if (p.region_of(fs) != p.region_of(c)) continue;
-            bool c1 = false, c2 = false;
-            for (int k = 0; k < 3; ++k) {
-              c1 |= exact::orient3d(pt(c, 0), pt(c, 1), pt(c, 2), pt(fs, k)) == Sign::kPositive;
-              c2 |= exact::orient3d(pt(fs, 0), pt(fs, 1), pt(fs, 2), pt(c, k)) != Sign::kNegative;
-            }
-            found = c1 && c2;
-          }
-          if (found) expect.push_back(c);
-        }
-        EXPECT_EQ(p.potential_occluders(s, n, [](uint32_t) { return true; }), expect)
+        const std::vector<uint32_t> n = p.neighbor_occluders(f.triangles);
+        EXPECT_EQ(p.potential_occluders(f.triangles, n, [](uint32_t) { return true; }),
+                  occluders_by_definition(p, f.triangles, n))
             << name << " feature " << f.id;
       }
     }
@@ -164,6 +171,28 @@ TEST(PartShared, FeaturesCoarsenAsTheAngleGrows) {
     }
     EXPECT_LT(previous, mesh->triangles.size()) << n;  // something merged at all
   }
+}
+
+// The search prunes by both conditions on bounds of S's triangles (boxes for (i), the
+// planes' coefficients for (ii)); curved features of many triangles on a threaded part are
+// where the bounds of (ii) cut most.
+TEST(PartShared, OccluderSearchOfCurvedFeaturesIsTheDefinition) {
+  const std::string path = std::string(GVM_SHARED_DIR) + "/data/parts/occt_TR12J_OCC.stl";
+  if (!fs::exists(path)) GTEST_SKIP() << "no " << path;
+  auto part = Part::analyze(load_solid(path).value(), {});
+  ASSERT_TRUE(part.ok()) << part.status().message();
+  int checked = 0;
+  size_t found = 0;
+  for (const Feature& f : part->features()) {
+    if (f.on_hull || f.triangles.size() < 16 || f.triangles.size() > 200 || checked == 3) continue;
+    ++checked;
+    const std::vector<uint32_t> n = part->neighbor_occluders(f.triangles);
+    const std::vector<uint32_t> expect = occluders_by_definition(*part, f.triangles, n);
+    EXPECT_EQ(part->potential_occluders(f.triangles, n, [](uint32_t) { return true; }), expect) << f.name;
+    found += expect.size();
+  }
+  EXPECT_EQ(checked, 3);
+  EXPECT_GT(found, 0u);
 }
 
 }  // namespace

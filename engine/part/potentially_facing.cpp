@@ -17,31 +17,67 @@ constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 // Planes with fewer triangles of S stay with the per-triangle search.
 constexpr size_t kMinPlaneTriangles = 16;
 
+// A triangle's plane in doubles, {x : u . x + w = 0} with u about unit, and how far the
+// value u . x + w may lie from the exact signed distance for any |x| <= the bound it was
+// made with. Conditioning: the rounded cross product of two edges turns by about
+// eps |e1| |e2| / |e1 x e2| radians, a sliver's by much more (its slack is then infinite).
+struct ApproxPlane {
+  double u[4];  // u[3] = w
+  double slack;
+
+  ApproxPlane(const SolidMesh& m, uint32_t t, double bound) {
+    const Point3 &a = m.points[m.triangles[t][0]], &b = m.points[m.triangles[t][1]],
+                 &c = m.points[m.triangles[t][2]];
+    const double e[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, f[3] = {c.x - a.x, c.y - a.y, c.z - a.z};
+    const double n[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double le = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const double lf = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    constexpr double kEps = 0x1p-52;
+    const double turn = 64 * kEps * le * lf / len + 64 * kEps;  // radians, generously
+    slack = len > 0 && turn < 1e-3 ? (4 * turn + 256 * kEps) * bound : INFINITY;
+    for (int k = 0; k < 3; ++k) u[k] = len > 0 ? n[k] / len : 0;
+    u[3] = -(u[0] * a.x + u[1] * a.y + u[2] * a.z);
+  }
+};
+
 // Bounding-box tree over a set of triangles (structure only: boxes are exact min/max of
 // input coordinates, so corner points are input-like doubles usable in exact predicates).
+// Each node also bounds its triangles' planes, coefficient by coefficient: a point whose
+// largest value over those bounds is certainly negative lies strictly behind every plane.
 struct BoxTree {
   struct Node {
     Point3 lo, hi;
+    double plane_lo[4], plane_hi[4], slack = 0;
     uint32_t begin, end;  // range in `items`
     uint32_t left = kNone, right = kNone;
   };
   std::vector<Node> nodes;
   std::vector<uint32_t> items;
 
-  BoxTree(const SolidMesh& m, std::vector<uint32_t> tris) : items(std::move(tris)) {
-    if (!items.empty()) build(m, 0, static_cast<uint32_t>(items.size()));
+  // bound: at least the largest absolute coordinate of any point searched with.
+  BoxTree(const SolidMesh& m, std::vector<uint32_t> tris, double bound) : items(std::move(tris)) {
+    if (!items.empty()) build(m, 0, static_cast<uint32_t>(items.size()), bound);
   }
 
-  uint32_t build(const SolidMesh& m, uint32_t begin, uint32_t end) {
+  uint32_t build(const SolidMesh& m, uint32_t begin, uint32_t end, double bound) {
     Node n;
     n.begin = begin, n.end = end;
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (uint32_t i = begin; i < end; ++i)
+    for (int k = 0; k < 4; ++k) n.plane_lo[k] = INFINITY, n.plane_hi[k] = -INFINITY;
+    for (uint32_t i = begin; i < end; ++i) {
       for (uint32_t v : m.triangles[items[i]])
         for (int k = 0; k < 3; ++k) {
           lo[k] = std::min(lo[k], m.points[v][k]);
           hi[k] = std::max(hi[k], m.points[v][k]);
         }
+      const ApproxPlane plane(m, items[i], bound);
+      for (int k = 0; k < 4; ++k) {
+        n.plane_lo[k] = std::min(n.plane_lo[k], plane.u[k]);
+        n.plane_hi[k] = std::max(n.plane_hi[k], plane.u[k]);
+      }
+      n.slack = std::max(n.slack, plane.slack);
+    }
     n.lo = {lo[0], lo[1], lo[2]};
     n.hi = {hi[0], hi[1], hi[2]};
     uint32_t id = static_cast<uint32_t>(nodes.size());
@@ -57,18 +93,31 @@ struct BoxTree {
       uint32_t mid = begin + (end - begin) / 2;
       std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
                        [&](uint32_t x, uint32_t y) { return key(x) < key(y); });
-      uint32_t l = build(m, begin, mid);
-      uint32_t r = build(m, mid, end);
+      uint32_t l = build(m, begin, mid, bound);
+      uint32_t r = build(m, mid, end, bound);
       nodes[id].left = l;
       nodes[id].right = r;
     }
     return id;
   }
 
+  // Whether a, b and c certainly lie strictly behind the plane of every triangle of the
+  // node: condition (ii) then fails for all of them. The largest value over the bounds
+  // rounds by less than 8 eps (4 |x| + 1) <= 40 eps |x|, inside the slack.
+  static bool behind_all(const Node& n, const Point3& a, const Point3& b, const Point3& c) {
+    for (const Point3* x : {&a, &b, &c}) {
+      double most = n.plane_hi[3];
+      for (int k = 0; k < 3; ++k) most += std::max(n.plane_lo[k] * (*x)[k], n.plane_hi[k] * (*x)[k]);
+      if (!(most < -n.slack)) return false;
+    }
+    return true;
+  }
+
   // Calls leaf(i) for the items[i] of the leaves whose box has a corner strictly in front of
   // the plane (a, b, c) -- a certified prune for condition (i): the corner farthest along
   // the normal (chosen by its exact signs) is not in front, so no vertex in the box is --
-  // until leaf returns true; returns whether one did.
+  // and whose planes a, b, c are not all certainly behind (condition (ii)), until leaf
+  // returns true; returns whether one did.
   template <class Leaf>
   bool search(const Point3& a, const Point3& b, const Point3& c, const exact::PlaneSide& side,
               const Leaf& leaf) const {
@@ -83,7 +132,7 @@ struct BoxTree {
       const Point3 corner{ns[0] == Sign::kPositive ? n.hi.x : n.lo.x,
                           ns[1] == Sign::kPositive ? n.hi.y : n.lo.y,
                           ns[2] == Sign::kPositive ? n.hi.z : n.lo.z};
-      if (side(corner) != Sign::kPositive) continue;
+      if (behind_all(n, a, b, c) || side(corner) != Sign::kPositive) continue;
       if (n.left != kNone) {
         stack[top++] = n.left;
         stack[top++] = n.right;
@@ -230,7 +279,10 @@ PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<ui
     const Triangle& tri = mesh.triangles[t];
     return exact::PlaneSide(mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]);
   };
-  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest)), {}});
+  // The points searched with are the mesh's.
+  double bound = 0;
+  for (const Point3& p : mesh.points) bound = std::max({bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest), 2 * bound), {}});
   for (const auto& p : planes) impl->planes.push_back({side(p.front()), planar_hull(mesh, p)});
   for (uint32_t t : impl->rest.items) impl->rest_side.push_back(side(t));
   impl_ = std::move(impl);
