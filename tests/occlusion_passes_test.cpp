@@ -5,10 +5,10 @@
 // LVM) are where the two passes are taken.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 
 #include "gvm/part.h"
+#include "support/shared_parts.h"
 #include "sphere/set_operations.h"
 #include "visibility/surface_visibility.h"
 
@@ -16,11 +16,8 @@ namespace gvm {
 namespace {
 
 TEST(OcclusionPasses, TwoPassGvmsAreTheConvexDecompositions) {
-  const std::string path = std::string(GVM_SHARED_DIR) + "/data/parts/occt_TR12J_OCC.stl";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
-  auto solid = load_solid(path);
-  ASSERT_TRUE(solid.ok()) << solid.status().message();
-  auto part = Part::analyze(std::move(*solid), PartOptions{});
+  if (!test::has_shared_part("occt_TR12J_OCC.stl")) GTEST_SKIP() << "no occt_TR12J_OCC.stl";
+  auto part = test::analyze_shared_part("occt_TR12J_OCC.stl");
   ASSERT_TRUE(part.ok()) << part.status().message();
   int two_pass = 0, visible = 0;
   for (const Feature& f : part->features()) {

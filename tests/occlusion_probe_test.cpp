@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 
 #include "gvm/part.h"
+#include "support/shared_parts.h"
 #include "visibility/occlusion_probe.h"
 #include "visibility/strip_events.h"
 #include "visibility/surface_visibility.h"
@@ -55,11 +55,8 @@ bool in_pieces(const std::vector<sphere::Arc>& pieces, const ExactVec& u) {
 class RimParts : public testing::TestWithParam<const char*> {};
 
 TEST_P(RimParts, StripsAlongARimAgreeWithEveryPairAsked) {
-  const std::string path = std::string(GVM_SHARED_DIR) + "/data/parts/" + GetParam();
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
-  auto solid = load_solid(path);
-  ASSERT_TRUE(solid.ok()) << solid.status().message();
-  auto part = Part::analyze(std::move(*solid), PartOptions{});
+  if (!test::has_shared_part(GetParam())) GTEST_SKIP() << "no " << GetParam();
+  auto part = test::analyze_shared_part(GetParam());
   ASSERT_TRUE(part.ok()) << part.status().message();
   const SolidMesh& mesh = part->mesh();
   int features = 0, visible = 0, blocked = 0, changes = 0;

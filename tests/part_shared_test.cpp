@@ -10,6 +10,7 @@
 
 #include "exact/predicates.h"
 #include "gvm/part.h"
+#include "support/shared_parts.h"
 
 namespace gvm {
 namespace {
@@ -177,9 +178,8 @@ TEST(PartShared, FeaturesCoarsenAsTheAngleGrows) {
 // planes' coefficients for (ii)); curved features of many triangles on a threaded part are
 // where the bounds of (ii) cut most.
 TEST(PartShared, OccluderSearchOfCurvedFeaturesIsTheDefinition) {
-  const std::string path = std::string(GVM_SHARED_DIR) + "/data/parts/occt_TR12J_OCC.stl";
-  if (!fs::exists(path)) GTEST_SKIP() << "no " << path;
-  auto part = Part::analyze(load_solid(path).value(), {});
+  if (!test::has_shared_part("occt_TR12J_OCC.stl")) GTEST_SKIP() << "no occt_TR12J_OCC.stl";
+  auto part = test::analyze_shared_part("occt_TR12J_OCC.stl");
   ASSERT_TRUE(part.ok()) << part.status().message();
   int checked = 0;
   size_t found = 0;

@@ -4,11 +4,11 @@
 // the planes of real features and every occluder touching them.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <map>
 #include <string>
 
 #include "gvm/part.h"
+#include "support/shared_parts.h"
 #include "visibility/strip_events.h"
 #include "visibility/surface_visibility.h"
 
@@ -16,11 +16,8 @@ namespace gvm {
 namespace {
 
 TEST(StripEvents, EqualKeysAreEqualLines) {
-  const std::string path = std::string(GVM_SHARED_DIR) + "/data/parts/prusa_x-end-idler.stl";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
-  auto solid = load_solid(path);
-  ASSERT_TRUE(solid.ok()) << solid.status().message();
-  auto part = Part::analyze(std::move(*solid), PartOptions{});
+  if (!test::has_shared_part("prusa_x-end-idler.stl")) GTEST_SKIP() << "no prusa_x-end-idler.stl";
+  auto part = test::analyze_shared_part("prusa_x-end-idler.stl");
   ASSERT_TRUE(part.ok()) << part.status().message();
   const SolidMesh& mesh = part->mesh();
   size_t events = 0, shared = 0, planes = 0;
