@@ -65,10 +65,10 @@ class ArcSpans {
 std::vector<uint32_t> spans_that_matter(const ArcSpans& arc, const std::vector<ArcSpans::Span>& spans);
 
 // The directions strictly inside an open arc shorter than 180 degrees, in order along it,
-// each as the indices of the directions equal to it. Their angles along the arc decide what they can; the exact order only
-// what lies within 1e-8 rad of an end of the arc or of another direction. The probe's
-// strip events of neighbouring triangles coincide often, and sorting all of them exactly
-// evaluated every tie (a tenth of occt_TR12J_OCC F234).
+// each as the indices of the directions equal to it. Their angles along the arc decide
+// what they can; the exact order only what lies within 1e-8 rad of an end of the arc or of
+// another direction. The probe's strip events of neighbouring triangles coincide often,
+// and sorting all of them exactly evaluated every tie (a tenth of occt_TR12J_OCC F234).
 std::vector<std::vector<uint32_t>> in_order_along(const sphere::Arc& open_arc,
                                                   const std::vector<exact::ExactVec>& directions);
 
