@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gvm/part.h"
+#include "sphere/d3.h"
 #include "support/shared_parts.h"
 #include "visibility/occlusion_probe.h"
 #include "visibility/strip_events.h"
@@ -22,24 +23,16 @@ using exact::ExactVec;
 // Directions exactly on the circle with normal n: n x w for w turning around n.
 struct Rim {
   ExactVec n;
-  std::array<double, 3> e1, e2;  // orthonormal, orthogonal to n (approximately)
+  sphere::D3 e1, e2;  // orthonormal, orthogonal to n (approximately)
 
   explicit Rim(const ExactVec& normal) : n(normal) {
-    const std::array<double, 3> u = exact::unit_estimate(n).unit;
-    const std::array<double, 3> helper = std::fabs(u[0]) < 0.6 ? std::array{1.0, 0.0, 0.0} : std::array{0.0, 1.0, 0.0};
-    e1 = unit(cross3(u, helper));
-    e2 = cross3(u, e1);
+    const sphere::D3 u = exact::unit_estimate(n).unit;
+    e1 = sphere::normalized(sphere::cross(u, std::fabs(u[0]) < 0.6 ? sphere::D3{1, 0, 0} : sphere::D3{0, 1, 0}));
+    e2 = sphere::cross(u, e1);
   }
   ExactVec at(double angle) const {
-    const double c = std::cos(angle), s = std::sin(angle);
-    return exact::cross(n, ExactVec::from_point({c * e1[0] + s * e2[0], c * e1[1] + s * e2[1], c * e1[2] + s * e2[2]}));
-  }
-  static std::array<double, 3> cross3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  }
-  static std::array<double, 3> unit(const std::array<double, 3>& a) {
-    const double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    return {a[0] / l, a[1] / l, a[2] / l};
+    const sphere::D3 w = sphere::add(sphere::add(sphere::D3{}, e1, std::cos(angle)), e2, std::sin(angle));
+    return exact::cross(n, ExactVec::from_point({w[0], w[1], w[2]}));
   }
 };
 

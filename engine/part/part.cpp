@@ -78,6 +78,7 @@ struct Part::Impl {
   std::vector<Feature> features;
   std::vector<uint32_t> vt_offset, vt;  // vertex -> incident triangles
   std::vector<uint32_t> vv_offset, vv;  // vertex -> neighbor vertices
+  double coordinate_bound = 0;          // the largest absolute coordinate of a vertex
 
   const Point3& P(uint32_t t, int i) const { return mesh.points[mesh.triangles[t][i]]; }
 };
@@ -132,6 +133,9 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
   I.mesh = std::move(mesh);
   const SolidMesh& m = I.mesh;
   const size_t nv = m.points.size();
+  for (const Point3& p : m.points) {
+    I.coordinate_bound = std::max({I.coordinate_bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  }
 
   // Adjacency: vertex -> triangles, vertex -> neighbor vertices (each directed triangle
   // edge (a, b) gives b as a neighbor of a; on a closed manifold every edge appears once
@@ -320,7 +324,7 @@ std::vector<uint32_t> Part::potential_occluders(
     for (uint32_t t : I.regions[r].triangles)
       if (!in_s.contains(t) && !in_n.contains(t)) cand.push_back(t);
     if (cand.empty()) continue;
-    const part_internal::PotentiallyFacing facing(m, s_r);
+    const part_internal::PotentiallyFacing facing(m, s_r, I.coordinate_bound);
     std::vector<uint8_t> ok(cand.size(), 0);
     tbb::parallel_for(size_t(0), cand.size(), [&](size_t ci) {
       interruption_point();  // one search of S's triangles per candidate

@@ -271,7 +271,8 @@ std::vector<uint32_t> planar_hull(const SolidMesh& m, const std::vector<uint32_t
 
 }  // namespace
 
-PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<uint32_t>& s) {
+PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<uint32_t>& s,
+                                     double coordinate_bound) {
   std::vector<std::vector<uint32_t>> planes;
   std::vector<uint32_t> rest;
   group_by_plane(mesh, s, planes, rest);
@@ -280,9 +281,7 @@ PotentiallyFacing::PotentiallyFacing(const SolidMesh& mesh, const std::vector<ui
     return exact::PlaneSide(mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]);
   };
   // The points searched with are the mesh's.
-  double bound = 0;
-  for (const Point3& p : mesh.points) bound = std::max({bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest), 2 * bound), {}});
+  auto impl = std::make_unique<Impl>(Impl{mesh, {}, BoxTree(mesh, std::move(rest), 2 * coordinate_bound), {}});
   for (const auto& p : planes) impl->planes.push_back({side(p.front()), planar_hull(mesh, p)});
   for (uint32_t t : impl->rest.items) impl->rest_side.push_back(side(t));
   impl_ = std::move(impl);

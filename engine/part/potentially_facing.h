@@ -19,7 +19,8 @@ namespace gvm::part_internal {
 
 class PotentiallyFacing {
  public:
-  PotentiallyFacing(const SolidMesh& mesh, const std::vector<uint32_t>& s);
+  // coordinate_bound: the largest absolute coordinate of the mesh's vertices.
+  PotentiallyFacing(const SolidMesh& mesh, const std::vector<uint32_t>& s, double coordinate_bound);
   ~PotentiallyFacing();
 
   // Conditions (i) and (ii) for triangle f of the mesh (exact; safe to call concurrently).
