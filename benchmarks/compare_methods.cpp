@@ -6,8 +6,10 @@
 //   gvm_compare --from-json FILE [--csv FILE] [--svg FILE]
 //
 // Without parts: every part of $GVM_SHARED_DIR/data/parts (default ../shared). For each
-// part, the K (default 3) features with the largest |S| * |O_S| (or every feature, or the
-// features named, e.g. F17, or given by id, e.g. '#17' for the JSON's feature 17), each
+// part, the K (default 3) features with the largest |S| * |O_S| whose LVM has a 2-cell (or
+// every feature, or the features named, e.g. F17, or given by id, e.g. '#17' for the
+// JSON's feature 17; an LVM of arcs and points the envelope method leaves to the occlusion
+// probe, with no envelope, so only the convex decomposition builds maps there), each
 // computed by both methods: #S, #O_S, #GOM, #Arrng, #GVM, seconds and peak memory, and
 // whether the two GVMs are equal. Convex decomposition is skipped on features with more
 // than N pairs (default: no limit). Prints a table; --csv and --json write the same rows
@@ -142,11 +144,12 @@ bool compare(const Options& opt, gvm::v1::Comparison& out) {
     struct Candidate {
       const gvm::Feature* feature;
       size_t o_s;
+      bool has_2_cell;  // of its LVM: else the envelope builds nothing (the probe decides)
     };
     std::vector<Candidate> candidates;
     for (const gvm::Feature& f : part->features()) {
       const gvm::SurfaceVisibility occluders = gvm::compute_surface_visibility(*part, f.triangles, false);
-      candidates.push_back({&f, occluders.occluders.potential.size()});
+      candidates.push_back({&f, occluders.occluders.potential.size(), occluders.lvm.dimension() == 2});
     }
     std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
       return a.feature->triangles.size() * a.o_s > b.feature->triangles.size() * b.o_s;
@@ -158,8 +161,10 @@ bool compare(const Options& opt, gvm::v1::Comparison& out) {
                  return f == c.feature->name || f == id;
                }) == opt.features.end();
       });
-    } else if (!opt.all_features && candidates.size() > opt.largest) {
-      candidates.resize(opt.largest);
+    } else if (!opt.all_features) {
+      // The largest whose LVM has a 2-cell: only there do the methods differ.
+      std::erase_if(candidates, [](const Candidate& c) { return !c.has_2_cell; });
+      if (candidates.size() > opt.largest) candidates.resize(opt.largest);
     }
     for (const Candidate& c : candidates) {
       gvm::v1::SurfaceComparison* row = out.add_surfaces();

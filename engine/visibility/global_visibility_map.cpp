@@ -386,6 +386,30 @@ std::vector<sphere::Arc> visible_on_seam(const sphere::Arc& open_edge, OpenCells
   return visible;
 }
 
+// The GVM of an LVM without 2-cells, from the rays alone: the probe decides Def. 2 for
+// every direction of the LVM, and its arcs and points need no closure of the occluded
+// directions (that is for the 2-cells, whose seams and grazing directions the probe then
+// decides). The visible set is closed (blocking is an open condition), so each piece's
+// visible sub-arcs hold their ends; the vertices between pieces are decided on their own.
+sphere::SphericalImage probed_visibility(const sphere::SphericalImage& lvm, const OcclusionProbe& probe) {
+  std::vector<sphere::Arc> visible;
+  auto add_point = [&](const ExactVec& x) {
+    for (const sphere::Arc& v : visible) {
+      if (sphere::arc_contains(v, x)) return;
+    }
+    if (!probe.occluded(x)) visible.push_back({x, x, x});  // a point: equal ends
+  };
+  for (const sphere::Arc& arc : lvm.curves()) {
+    const std::vector<ExactVec> v = sphere::split_arc(arc);
+    for (size_t k = 0; k + 1 < v.size(); ++k) {
+      for (sphere::Arc& piece : probe.unoccluded({v[k], v[k + 1], arc.normal})) visible.push_back(std::move(piece));
+    }
+    for (const ExactVec& x : v) add_point(x);
+  }
+  for (const ExactVec& p : lvm.points()) add_point(p);
+  return with_pieces(sphere::SphericalImage{}, visible);
+}
+
 }  // namespace
 
 sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<const uint32_t> s,
@@ -397,6 +421,11 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   const std::vector<uint32_t> beam = occluders_in_beam(mesh, s, o, lvm);
   if (stats) stats->occluders_in_beam = beam.size();
   if (beam.empty()) return lvm;
+  // The convex decomposition still builds the closure there: the baseline, which the
+  // probe's answer is compared with (MethodEquality).
+  if (lvm.dimension() < 2 && method == OcclusionMethod::kEffectiveMinkowskiEnvelope) {
+    return probed_visibility(lvm, OcclusionProbe(mesh, s, beam));
+  }
   const DirectionWindow window(lvm, coordinate_bound(mesh, s, beam));
   // One window around a small LVM only: the fan windows of ClipWindow::covering made the
   // unions of piattello.stp grow past 24 GB (regions clipped to neighbouring windows).

@@ -5,7 +5,9 @@
 // arcs and points of the LVM that no open occlusion covers survive. Directions of Int(GOM)
 // whose rays only graze O_S are visible (Def. 2 of the paper): the occlusion probe
 // decides the arcs and points of the LVM in there, and the seams inside its 2-cells
-// (seam_candidates.h), so that the GVM is Def. 2 exactly.
+// (seam_candidates.h), so that the GVM is Def. 2 exactly. An LVM without 2-cells (a slot's
+// arc, a through hole's axis) needs no closure at all: with the envelope method the probe
+// decides all of it.
 #pragma once
 
 #include <cstdint>
