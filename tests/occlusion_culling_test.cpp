@@ -198,5 +198,39 @@ TEST(OcclusionCulling, ClippedToWindowsTheUnionIsRightInsideThem) {
   EXPECT_GT(checked.inside + checked.outside, 1000);
 }
 
+TEST(OcclusionCulling, FacesAlongTheBoundaryOfWhatIsLeftAreLeftOutButNotAtTheRim) {
+  // Needed: the square [-2, 2]^2; the first tier, the largest face A = [-4, 0] x [-2, 2],
+  // leaves V = [0, 2] x [-2, 2]. Faces whose open insides miss V but which share V's side
+  // x = 0 (CAD envelopes run along the union's boundary on the same circles) change the
+  // union's interior nowhere on the square: the small squares inside A along x = 0, and F,
+  // which sticks out of A on the left, outside the square. G touches V only on the
+  // square's own side x = 2, where with K inside the square it makes that side interior:
+  // it must be kept.
+  const Polygon a = square(-4, -2, 0, 2), f = square(-5, -1, 0, 1), g = square(2, -1, 3, 1), k = square(1.5, -1, 2, 1);
+  std::vector<Polygon> faces = {a, f, g, k};
+  for (int j = -8; j < 8; ++j) faces.push_back(square(-0.5, j / 4.0, 0, (j + 1) / 4.0));
+  std::vector<uint32_t> all(faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  const D3 r = unit_d({-3, 5, -17});
+  auto unite = [&](std::span<const uint32_t> subset) { return union_of(faces, subset, v(r)); };
+  const SphericalImage needed = image_of(square(-2, -2, 2, 2));
+  TieredUnionStatistics stats;
+  const TierPolicy one_face_first{.first_tier_share = 1 << 20, .min_first_tier = 1};
+  const Region region = union_by_tiers(faces, all, {}, unite, v(r), &stats, one_face_first, &needed);
+  EXPECT_GT(stats.tiers, 2u);
+  EXPECT_EQ(stats.left_out, 17u);  // F and the 16 squares along x = 0
+
+  Checked checked;
+  check_against_faces(faces, to_doubles(arcs_of(faces)), region, r, 4, checked, [](const D3& u) {
+    return u[2] > 0 && std::fabs(8 * u[0] / u[2]) < 2 && std::fabs(8 * u[1] / u[2]) < 2;
+  });
+  EXPECT_GT(checked.inside, 20);
+  EXPECT_GT(checked.outside, 20);
+  // The square's side x = 2 between K and G lies inside the union.
+  SphericalImage side;
+  side.add_curve({v(2, -0.5, 8), v(2, 0.5, 8), cross(v(2, -0.5, 8), v(2, 0.5, 8))});
+  EXPECT_TRUE(outside_interior(side, region, v(r)).is_empty());
+}
+
 }  // namespace
 }  // namespace gvm
