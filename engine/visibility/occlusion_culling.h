@@ -9,16 +9,19 @@
 //
 // "Inside R" is decided conservatively, in double precision with a slack far above the
 // rounding of the estimates (as redundant_faces.h decides): no boundary arc of R meets the
-// face (a great circle separates them: the arc's own circle, or the circle of a side of
-// the face, with the arc's ends beyond it), so the face lies wholly inside or wholly
-// outside R; and a point inside the face lies strictly inside a face already in R. A face
-// the doubles cannot decide is kept.
+// face's open inside (a great circle separates them: the arc's own circle, or the circle
+// of a side of the face, with the arc's ends beyond it or on it), so that lies wholly
+// inside or wholly outside R; and a point inside the face lies strictly inside a face
+// already in R. Ends and vertices within the slack of a circle are decided exactly: CAD
+// envelopes have many faces along the union's boundary, on its very circles. A face the
+// doubles and those signs cannot decide is kept.
 //
 // The union matters only around the LVM (`needed`), and after each tier the exact set V
 // of its directions outside the union's interior is known (sphere::outside_interior): a
 // later face that misses V can change the GVM nowhere and is left out too. That a face
-// misses V is decided the same way: no boundary arc, curve or point of V meets it, and a
-// point inside it lies outside the LVM or strictly inside a face already in the union.
+// misses V is decided the same way: no boundary arc, curve or point of V meets its open
+// inside, and a point inside it lies outside the LVM or strictly inside a face already in
+// the union; and the closed face misses V on the LVM's boundary (below).
 #pragma once
 
 #include <cstdint>
@@ -66,9 +69,11 @@ struct TieredUnionStatistics {
 // With `needed` (the LVM; `reference` then lies on none of its circles and points), the
 // result holds only the same interior as the union of all faces on `needed`, which is all
 // the GVM reads. Let R be the union of the tiers so far and V = needed - Int(R), a closed
-// set. A face that does not meet V is left out: a direction of needed - V lies in Int(R)
-// either way, and every direction of V has a neighbourhood the face does not meet (both
-// are compact), on which leaving it out changes nothing. Once V is empty, R is returned
+// set. A face F whose open inside misses V, and which misses V on the boundary of `needed`,
+// is left out: a direction of needed - V lies in Int(R) either way; at a direction x of V,
+// the points F adds near x lie in its open inside (the union is closed and F's sides are
+// nowhere dense), so outside V: inside Int(R), or outside `needed`, which near x means x
+// is on its boundary, where F does not reach. Once V is empty, R is returned
 // and the later tiers are not needed (prusa_y-rod-holder F16, whose GVM is empty: the
 // first tier already held the whole LVM).
 sphere::Region union_by_tiers(std::span<const std::vector<exact::ExactVec>> faces,
