@@ -1,5 +1,6 @@
 #include "visibility/seam_candidates.h"
 
+#include <tbb/concurrent_unordered_map.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -82,9 +83,10 @@ Border border_of(const SolidMesh& mesh, std::span<const uint32_t> s) {
   return border;
 }
 
-// The corners and edges of the triangles of O, each with what lies around it.
+// The corners of the triangles of O, each with a triangle at it (its star is built when a
+// contact needs it), and their edges with the triangles on both sides.
 struct Occluder {
-  std::vector<std::pair<uint32_t, Fan>> corners;
+  std::vector<std::pair<uint32_t, uint32_t>> corners;  // (vertex, triangle)
   std::vector<std::array<uint32_t, 4>> edges;  // (a, b, c, d): triangles (a, b, c) and (b, a, d)
 };
 
@@ -104,12 +106,8 @@ Occluder occluder_of(const SolidMesh& mesh, std::span<const uint32_t> o) {
       occ.edges.push_back({a, b, tri[(i + 2) % 3], d});
     }
   }
-  std::vector<std::pair<uint32_t, uint32_t>> sorted(corner_triangle.begin(), corner_triangle.end());
-  std::sort(sorted.begin(), sorted.end());
-  occ.corners.resize(sorted.size());
-  tbb::parallel_for(size_t{0}, sorted.size(), [&](size_t i) {
-    occ.corners[i] = {sorted[i].first, star(mesh, sorted[i].second, sorted[i].first)};
-  });
+  occ.corners.assign(corner_triangle.begin(), corner_triangle.end());
+  std::sort(occ.corners.begin(), occ.corners.end());
   return occ;
 }
 
@@ -136,15 +134,29 @@ class OpenLvm {
   std::vector<ExactVec> normals_;
 };
 
-ExactVec direction(const SolidMesh& mesh, uint32_t from, uint32_t to) {
-  return ExactVec::from_point(mesh.points[to]) - ExactVec::from_point(mesh.points[from]);
-}
+// The directions q - p of contacts, each built once: arcs that share an end then share its
+// node, and the exact predicates on them see the zeros by construction (seam_pieces.h's
+// crossings of arcs at a common end, ends on one circle).
+class ContactDirections {
+ public:
+  explicit ContactDirections(const SolidMesh& mesh) : mesh_(mesh) {}
+  ExactVec operator()(uint32_t p, uint32_t q) const {
+    const uint64_t key = uint64_t(p) << 32 | q;
+    if (const auto it = cache_.find(key); it != cache_.end()) return it->second;
+    return cache_.emplace(key, ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]))
+        .first->second;
+  }
+
+ private:
+  const SolidMesh& mesh_;
+  mutable tbb::concurrent_unordered_map<uint64_t, ExactVec> cache_;
+};
 
 // The arc of directions from p0 to q0 to those from p1 to q1 (one of each pair shared), when
 // it may meet the open LVM.
-void add_arc(const SolidMesh& mesh, uint32_t p0, uint32_t q0, uint32_t p1, uint32_t q1, int side,
+void add_arc(const ContactDirections& direction, uint32_t p0, uint32_t q0, uint32_t p1, uint32_t q1, int side,
              const OpenLvm& lvm, std::vector<GrazingArc>& out) {
-  const ExactVec a = direction(mesh, p0, q0), b = direction(mesh, p1, q1);
+  const ExactVec a = direction(p0, q0), b = direction(p1, q1);
   if (lvm.may_meet(a, b)) out.push_back({{a, b, exact::cross(a, b), 0, 0}, side});
 }
 
@@ -247,6 +259,7 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   const Border border = border_of(mesh, s);
   const Occluder occ = occluder_of(mesh, o);
   const OpenLvm open(lvm);
+  const ContactDirections direction(mesh);
   // The window's values at every point used, for the certain misses in double precision.
   const size_t k = window.size();
   // The window's values m_k . x: the smallest over each border edge and at each border
@@ -286,18 +299,20 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   };
   std::vector<Found> at_corner(occ.corners.size()), at_edge(occ.edges.size());
   tbb::parallel_for(size_t{0}, occ.corners.size(), [&](size_t i) {
-    const auto& [q, fan_q] = occ.corners[i];
+    const auto& [q, triangle] = occ.corners[i];
+    std::optional<Fan> star_q;  // built for the first contact that gets that far
+    auto fan_q = [&]() -> const Fan& { return star_q ? *star_q : star_q.emplace(star(mesh, triangle, q)); };
     s_edge.for_each_meeting(o_corner[i].data(), [&](size_t j) {
       const auto& e = border.edges[j];
-      if (q != e[0] && q != e[1] && !edge_to_corner_rules_out(mesh, e, q, fan_q)) {
-        add_arc(mesh, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
+      if (q != e[0] && q != e[1] && !edge_to_corner_rules_out(mesh, e, q, fan_q())) {
+        add_arc(direction, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
       }
       return true;
     });
     s_corner.for_each_meeting(o_corner[i].data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
-      if (q != p && !corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q)) {
-        const ExactVec u = direction(mesh, p, q);
+      if (q != p && !corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q())) {
+        const ExactVec u = direction(p, q);
         if (open.may_meet(u, u)) at_corner[i].points.push_back(u);
       }
       return true;
@@ -308,7 +323,7 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
     s_corner.for_each_meeting(o_edge[i].data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
       if (p != e[0] && p != e[1] && !corner_to_edge_rules_out(mesh, p, fan_p, e)) {
-        add_arc(mesh, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
+        add_arc(direction, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
       }
       return true;
     });

@@ -64,6 +64,12 @@ std::vector<std::vector<GrazingArc>> by_circle(std::vector<GrazingArc> arcs) {
   return circles;
 }
 
+// Whether u, a direction on the circle of minor arc (from, to) around n, lies on the arc:
+// the arcs and ends grouped on one circle lie on it exactly, so only the ends are tested.
+bool on_arc(const ExactVec& n, const ExactVec& from, const ExactVec& to, const ExactVec& u) {
+  return exact::sign_det(n, from, u) != Sign::kNegative && exact::sign_det(n, u, to) != Sign::kNegative;
+}
+
 // Arcs on one circle (their common normal n), merged in order of their starts along it:
 // an arc starting on the current one extends it while the result stays shorter than 180
 // degrees. The order is by angle in doubles, from the estimates (rounding the exact
@@ -87,9 +93,8 @@ std::vector<ArrangementArc> merged(std::vector<ArrangementArc> arcs) {
   for (const auto& [_, i] : by_start) {
     const ArrangementArc& next = arcs[i];
     if (current) {
-      const sphere::Arc held{current->from, current->to, n};
-      if (sphere::arc_contains(held, next.from)) {
-        if (sphere::arc_contains(held, next.to)) continue;
+      if (on_arc(n, current->from, current->to, next.from)) {
+        if (on_arc(n, current->from, current->to, next.to)) continue;
         if (exact::sign_det(n, current->from, next.to) == Sign::kPositive) {
           current->to = next.to;
           continue;
@@ -106,17 +111,17 @@ std::vector<ArrangementArc> merged(std::vector<ArrangementArc> arcs) {
 // The common part of two closed arcs on one circle, each shorter than 180 degrees (so it
 // is one piece at most): from the start that lies on the other arc to the end that does.
 std::optional<sphere::Arc> overlap(const ArrangementArc& x, const ArrangementArc& y) {
-  const sphere::Arc ax{x.from, x.to, x.normal}, ay{y.from, y.to, y.normal};
+  const ExactVec& n = x.normal;  // y's too
   std::optional<ExactVec> lo, hi;
-  if (sphere::arc_contains(ax, y.from)) {
+  if (on_arc(n, x.from, x.to, y.from)) {
     lo = y.from;
-  } else if (sphere::arc_contains(ay, x.from)) {
+  } else if (on_arc(n, y.from, y.to, x.from)) {
     lo = x.from;
   } else {
     return std::nullopt;
   }
-  hi = sphere::arc_contains(ay, x.to) ? x.to : y.to;
-  return sphere::Arc{*lo, *hi, x.normal};
+  hi = on_arc(n, y.from, y.to, x.to) ? x.to : y.to;
+  return sphere::Arc{*lo, *hi, n};
 }
 
 // X strictly inside arc a (on its circle, strictly between its ends).
@@ -133,8 +138,14 @@ std::vector<ExactVec> triple_points(const std::vector<ArrangementArc>& arcs, con
   }
   const sphere::BoxTree tree(boxes);
   std::vector<ExactVec> out;
+  // Arcs with a common end (one node) cross only there, at no point strictly inside them:
+  // their circles meet at that end and its antipode, which no minor arc from it reaches.
+  auto common_end = [](const ArrangementArc& a, const ArrangementArc& b) {
+    return a.from.node() == b.from.node() || a.from.node() == b.to.node() || a.to.node() == b.from.node() ||
+           a.to.node() == b.to.node();
+  };
   for (auto [i, j] : tree.overlapping_pairs()) {
-    if (circle[i] == circle[j]) continue;
+    if (circle[i] == circle[j] || common_end(arcs[i], arcs[j])) continue;
     ExactVec x = exact::cross(arcs[i].normal, arcs[j].normal);
     if (exact::sign_det(arcs[i].normal, arcs[i].from, x) != Sign::kPositive) x = -x;
     if (!strictly_on(arcs[i], x) || !strictly_on(arcs[j], x)) continue;
