@@ -16,6 +16,7 @@
 // (JSON: protobuf's mapping of gvm.v1.Comparison); --svg plots seconds and #Arrng of both
 // methods against |S| * |O_S|. --from-json reads the rows of an earlier run instead of
 // computing them (to redraw the table, CSV or plot).
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -56,7 +57,7 @@ struct Options {
 
 constexpr const char* kUsage =
     "usage: gvm_compare [PART...] [--largest K | --all-features | --feature NAME...] [--no-convex] "
-    "[--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE] [--svg FILE]\n"
+    "[--convex-max-pairs N] [--threads T] [--csv FILE] [--json FILE] [--svg FILE] [-v]\n"
     "       gvm_compare --from-json FILE [--csv FILE] [--svg FILE]\n";
 
 // The most resident memory a run adds to the process: VmHWM after it less VmRSS before
@@ -251,6 +252,7 @@ int main(int argc, char** argv) {
     else if (a == "--json") opt.json = next();
     else if (a == "--svg") opt.svg = next();
     else if (a == "--from-json") opt.from_json = next();
+    else if (a == "-v" || a == "--verbose") spdlog::set_level(spdlog::level::debug);
     else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "gvm_compare: unknown option %s\n%s", a.c_str(), kUsage);
       return 2;

@@ -135,23 +135,48 @@ Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d
   return det3_of_differences(a, b, a, c, a, d);
 }
 
-PlaneSide::PlaneSide(const Point3& a, const Point3& b, const Point3& c) : a_(a), b_(b), c_(c) {
-  const V<double> u = diff<double>(b, a), v = diff<double>(c, a);
+DifferenceDet::DifferenceDet(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1)
+    : a0_(a0), a1_(a1), b0_(b0), b1_(b1) {
+  const V<double> u = diff<double>(a1, a0), v = diff<double>(b1, b0);
   const double yz = u.y * v.z, zy = u.z * v.y, zx = u.z * v.x, xz = u.x * v.z, xy = u.x * v.y, yx = u.y * v.x;
   minor_[0] = yz - zy, minor_[1] = zx - xz, minor_[2] = xy - yx;
   permanent_[0] = std::fabs(yz) + std::fabs(zy);
   permanent_[1] = std::fabs(zx) + std::fabs(xz);
   permanent_[2] = std::fabs(xy) + std::fabs(yx);
+  for (int axis = 0; axis < 3 && axis_ < 0; ++axis) {
+    if (a0[axis] == a1[axis] && b0[axis] == b1[axis]) {
+      axis_ = axis;
+      const Point3 unit{double(axis == 0), double(axis == 1), double(axis == 2)};
+      axis_sign_ = det3_of_differences(a0, a1, b0, b1, Point3{0, 0, 0}, unit);
+    }
+  }
 }
 
-// det(d - a, b - a, c - a), the same sign as det(b - a, c - a, d - a), evaluated as
-// static_det3 evaluates it, with its bound.
-Sign PlaneSide::operator()(const Point3& d) const {
-  const V<double> w = diff<double>(d, a_);
+// det(c1 - c0, a1 - a0, b1 - b0), the same sign as det(a1 - a0, b1 - b0, c1 - c0),
+// evaluated as static_det3 evaluates it, with its bound. Both differences normal to an
+// axis (the edges and faces of CAD parts, most of which run along axes): their cross
+// product lies along it, and the determinant is its sign times the third difference's
+// coordinate there, exact without the exact stage, which zeros (a third vector along the
+// plane) would otherwise take.
+std::optional<Sign> DifferenceDet::filtered(const Point3& c0, const Point3& c1) const {
+  if (axis_ >= 0) {
+    const Sign along = c1[axis_] > c0[axis_] ? Sign::kPositive : c1[axis_] < c0[axis_] ? Sign::kNegative : Sign::kZero;
+    return along * axis_sign_;
+  }
+  const V<double> w = diff<double>(c1, c0);
   const double det = w.x * minor_[0] + w.y * minor_[1] + w.z * minor_[2];
   const double ax = std::fabs(w.x), ay = std::fabs(w.y), az = std::fabs(w.z);
   const double permanent = ax * permanent_[0] + ay * permanent_[1] + az * permanent_[2];
-  if (auto s = decided(det, 0x1p-50 * permanent + (ax + ay + az + 1) * 0x1p-1069)) return *s;
+  return decided(det, 0x1p-50 * permanent + (ax + ay + az + 1) * 0x1p-1069);
+}
+
+Sign DifferenceDet::operator()(const Point3& c0, const Point3& c1) const {
+  if (auto s = filtered(c0, c1)) return *s;
+  return det3_of_differences(a0_, a1_, b0_, b1_, c0, c1);
+}
+
+Sign PlaneSide::operator()(const Point3& d) const {
+  if (auto s = det_.filtered(a_, d)) return *s;
   return orient3d(a_, b_, c_, d);
 }
 

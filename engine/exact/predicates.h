@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "gvm/geometry.h"
@@ -18,17 +19,36 @@ namespace gvm::exact {
 // normal (b-a) x (c-a) points to.
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
 
-// orient3d(a, b, c, d) for one plane (a, b, c) and many points d: the minors of b - a and
-// c - a that the static filter stage needs are formed once, so that a point costs about
-// half the arithmetic of a call; what that stage cannot decide goes to orient3d.
+// det_diff(a0, a1, b0, b1, c0, c1) for one pair of differences and many third ones: the
+// minors of a1 - a0 and b1 - b0 that the static filter stage needs are formed once, so
+// that a call costs about half the arithmetic of det_diff; what that stage cannot decide
+// goes to det_diff.
+class DifferenceDet {
+ public:
+  DifferenceDet(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1);
+  Sign operator()(const Point3& c0, const Point3& c1) const;
+  // The static stage alone: nothing when it cannot decide.
+  std::optional<Sign> filtered(const Point3& c0, const Point3& c1) const;
+
+ private:
+  Point3 a0_, a1_, b0_, b1_;
+  double minor_[3], permanent_[3];  // (a1 - a0) x (b1 - b0) in doubles, and its terms' magnitudes
+  int axis_ = -1;                   // the axis both differences are normal to, if any
+  Sign axis_sign_ = Sign::kZero;    // the sign of (a1 - a0) x (b1 - b0) along it
+};
+
+// orient3d(a, b, c, d) for one plane (a, b, c) and many points d, by DifferenceDet; what
+// its static stage cannot decide goes to orient3d.
 class PlaneSide {
  public:
-  PlaneSide(const Point3& a, const Point3& b, const Point3& c);
+  PlaneSide(const Point3& a, const Point3& b, const Point3& c) : a_(a), b_(b), c_(c), det_(a, b, a, c) {}
   Sign operator()(const Point3& d) const;
+  // det(b - a, c - a, e1 - e0): the side of the plane's normal that e1 - e0 points to.
+  Sign along(const Point3& e0, const Point3& e1) const { return det_(e0, e1); }
 
  private:
   Point3 a_, b_, c_;
-  double minor_[3], permanent_[3];  // (b - a) x (c - a) in doubles, and its terms' magnitudes
+  DifferenceDet det_;
 };
 
 // Sign of det(a1-a0, b1-b0, c1-c0) for three difference vectors of input points. This is

@@ -224,19 +224,19 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   // normal n; volume directions are O's edges at q.
   for_each_chunked(s.size(), parts, [&](size_t si, Partial& out) {
     const Triangle& f = mesh.triangles[s[si]];
-    const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
+    const exact::PlaneSide plane(P[f[0]], P[f[1]], P[f[2]]);
     std::vector<double> p_min(K);
     if (win.active()) win.extreme({f[0], f[1], f[2]}, false, p_min.data());
     visit_meeting(o_vertex, p_min, out, [&](size_t i) {
       const uint32_t q = to.vertices()[i];
       CriticalSet crit;
       for (uint32_t w : to.neighbors(i)) {
-        crit.add(exact::det_diff(a, b, a, c, P[q], P[w]));
+        crit.add(plane.along(P[q], P[w]));
         if (crit.mixed()) break;
       }
       if (crit.mixed()) return;
       ++out.kept;
-      int orient = envelope_orientation(crit, exact::orient3d(a, b, c, P[q]));
+      int orient = envelope_orientation(crit, plane(P[q]));
       if (orient > 0) out.add({{q, f[0]}, {q, f[1]}, {q, f[2]}});
       if (orient < 0) out.add({{q, f[2]}, {q, f[1]}, {q, f[0]}});
     });
@@ -245,19 +245,19 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   // FV: F_O + (-V_S). Normal n of F_O; volume directions are -(w - p) for S's edges at p.
   for_each_chunked(o.size(), parts, [&](size_t oi, Partial& out) {
     const Triangle& f = mesh.triangles[o[oi]];
-    const Point3 &a = P[f[0]], &b = P[f[1]], &c = P[f[2]];
+    const exact::PlaneSide plane(P[f[0]], P[f[1]], P[f[2]]);
     std::vector<double> q_max(K);
     if (win.active()) win.extreme({f[0], f[1], f[2]}, true, q_max.data());
     visit_meeting(s_vertex, q_max, out, [&](size_t i) {
       const uint32_t p = ts.vertices()[i];
       CriticalSet crit;
       for (uint32_t w : ts.neighbors(i)) {
-        crit.add(exact::det_diff(a, b, a, c, P[w], P[p]));
+        crit.add(plane.along(P[w], P[p]));
         if (crit.mixed()) break;
       }
       if (crit.mixed()) return;
       ++out.kept;
-      int orient = envelope_orientation(crit, exact::det_diff(a, b, a, c, P[p], a));
+      int orient = envelope_orientation(crit, plane.along(P[p], P[f[0]]));
       if (orient > 0) out.add({{f[0], p}, {f[1], p}, {f[2], p}});
       if (orient < 0) out.add({{f[2], p}, {f[1], p}, {f[0], p}});
     });
@@ -273,18 +273,15 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     visit_meeting(s_edge, q_max, out, [&](size_t j) {
       const auto& es = ts.edges()[j];
       const Point3 &p0 = P[es.a], &p1 = P[es.b];
+      const exact::DifferenceDet normal(q0, q1, p0, p1);
       CriticalSet crit;
-      for (int k = 0; k < eo.face_count && !crit.mixed(); ++k) {
-        crit.add(exact::det_diff(q0, q1, p0, p1, q0, P[eo.opposite[k]]));
-      }
-      for (int k = 0; k < es.face_count && !crit.mixed(); ++k) {
-        crit.add(exact::det_diff(q0, q1, p0, p1, P[es.opposite[k]], p0));
-      }
+      for (int k = 0; k < eo.face_count && !crit.mixed(); ++k) crit.add(normal(q0, P[eo.opposite[k]]));
+      for (int k = 0; k < es.face_count && !crit.mixed(); ++k) crit.add(normal(P[es.opposite[k]], p0));
       if (crit.mixed()) return;
       // Parallel edges give n = 0: every value, sigma included, is zero and the
       // "parallelogram" is a segment, dropped as tangent below.
       ++out.kept;
-      int orient = envelope_orientation(crit, exact::det_diff(q0, q1, p0, p1, p0, q0));
+      int orient = envelope_orientation(crit, normal(p0, q0));
       // (q0-p0, q1-p0, q1-p1, q0-p1) runs counter-clockwise around -n.
       if (orient < 0) out.add({{eo.a, es.a}, {eo.b, es.a}, {eo.b, es.b}, {eo.a, es.b}});
       if (orient > 0) out.add({{eo.a, es.b}, {eo.b, es.b}, {eo.b, es.a}, {eo.a, es.a}});

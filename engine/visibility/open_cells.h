@@ -44,6 +44,9 @@ class OpenCells {
 
   std::vector<Cell> cells_;
   std::optional<sphere::BoxTree> tree_;
+  // The normals' unit estimates, cell i's from first_normal_[i], built with the tree.
+  std::vector<exact::UnitEstimate> normal_estimates_;
+  std::vector<size_t> first_normal_;
 };
 
 }  // namespace gvm
