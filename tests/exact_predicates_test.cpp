@@ -228,6 +228,41 @@ TEST(ExactPredicates, AxisAlignedPlanesMatchRationalReference) {
   EXPECT_GT(aligned, 10000);
 }
 
+TEST(ExactPredicates, DifferenceDetMatchesRationalReference) {
+  // DifferenceDet decides a pair of differences both normal to an axis (edges and faces
+  // of CAD parts) by the third difference's coordinate there: every sign against
+  // rationals, with the pair normal to an axis in three of four iterations (parallel
+  // pairs and coordinates that differ in the last bit among them), the third difference
+  // along the pair's plane in a third of them.
+  std::mt19937_64 rng(20261202);
+  std::uniform_int_distribution<int> small(-3, 3), axis_of(0, 2), pick(0, 3);
+  const double levels[] = {0.1, 0.1 + 0x1p-55, 0.3, -2.5};
+  auto coordinate = [&] { return pick(rng) == 0 ? levels[pick(rng)] : small(rng) * 0.1; };
+  auto set = [](Point3& p, int axis, double v) { (axis == 0 ? p.x : axis == 1 ? p.y : p.z) = v; };
+  int zeros = 0, aligned = 0;
+  for (int iter = 0; iter < 20000; ++iter) {
+    SCOPED_TRACE("iteration " + std::to_string(iter));
+    const int axis = axis_of(rng);
+    Point3 v[6];
+    for (Point3& p : v) p = {coordinate(), coordinate(), coordinate()};
+    if (iter % 4 != 3) {
+      set(v[1], axis, v[0][axis]);
+      set(v[3], axis, v[2][axis]);
+      ++aligned;
+    }
+    if (iter % 3 == 0) set(v[5], axis, v[4][axis]);
+    if (iter % 7 == 0) v[3] = {v[2].x + v[1].x - v[0].x, v[2].y + v[1].y - v[0].y, v[2].z + v[1].z - v[0].z};
+    const DifferenceDet det(v[0], v[1], v[2], v[3]);
+    const Sign got = det(v[4], v[5]);
+    ASSERT_EQ(got, reference_det_diff(v[0], v[1], v[2], v[3], v[4], v[5]));
+    ASSERT_EQ(got, det_diff(v[0], v[1], v[2], v[3], v[4], v[5]));
+    ASSERT_EQ(PlaneSide(v[0], v[1], v[3]).along(v[4], v[5]), reference_det_diff(v[0], v[1], v[0], v[3], v[4], v[5]));
+    zeros += got == Sign::kZero;
+  }
+  EXPECT_GT(zeros, 3000);
+  EXPECT_GT(aligned, 10000);
+}
+
 TEST(ExactVec, CrossProductDirectionsAreExact) {
   // Edge direction of two rotated walls meeting at a concave edge: n0 x n1 is exactly the
   // rotated z axis.
