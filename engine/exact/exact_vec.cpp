@@ -364,11 +364,16 @@ UnitEstimate unit_estimate(const ExactVec& a) {
   return {{w[0] / len, w[1] / len, w[2] / len}, radius};
 }
 
-Sign sign_dot(const ExactVec& a, const ExactVec& b, const UnitEstimate& ea, const UnitEstimate& eb) {
+std::optional<Sign> estimated_sign_dot(const UnitEstimate& ea, const UnitEstimate& eb) {
   const double d = ea.unit[0] * eb.unit[0] + ea.unit[1] * eb.unit[1] + ea.unit[2] * eb.unit[2];
   const double bound = (ea.radius + eb.radius + ea.radius * eb.radius + 0x1p-50) * (1 + 0x1p-40);
   if (d > bound) return Sign::kPositive;
   if (d < -bound) return Sign::kNegative;
+  return std::nullopt;
+}
+
+Sign sign_dot(const ExactVec& a, const ExactVec& b, const UnitEstimate& ea, const UnitEstimate& eb) {
+  if (const std::optional<Sign> s = estimated_sign_dot(ea, eb)) return *s;
   return sign_dot(a, b);
 }
 

@@ -7,6 +7,8 @@
 // direction is any positive multiple, so all constructions stay exact.
 #pragma once
 
+#include <optional>
+
 #include <array>
 #include <memory>
 
@@ -84,5 +86,7 @@ UnitEstimate unit_estimate(const ExactVec& a);
 // the estimates', which the doubles round by less than 2^-50 more. For loops that test
 // each estimate many times (an arrangement's candidate pairs).
 Sign sign_dot(const ExactVec& a, const ExactVec& b, const UnitEstimate& ea, const UnitEstimate& eb);
+// The same sign from the estimates alone: nothing where they cannot certainly decide it.
+std::optional<Sign> estimated_sign_dot(const UnitEstimate& ea, const UnitEstimate& eb);
 
 }  // namespace gvm::exact

@@ -19,18 +19,18 @@ using exact::ExactVec;
 std::optional<bool> estimated_inside(std::span<const exact::UnitEstimate> normals, const exact::UnitEstimate& x) {
   bool certain = true;
   for (const exact::UnitEstimate& n : normals) {
-    const double d = x.unit[0] * n.unit[0] + x.unit[1] * n.unit[1] + x.unit[2] * n.unit[2];
-    const double bound = (x.radius + n.radius + x.radius * n.radius + 0x1p-50) * (1 + 0x1p-40);
-    if (d < -bound) return false;
-    certain = certain && d > bound;
+    const std::optional<Sign> s = exact::estimated_sign_dot(x, n);
+    if (s == Sign::kNegative) return false;
+    certain = certain && s == Sign::kPositive;
   }
   if (!certain) return std::nullopt;
   return true;
 }
 
-bool strictly_inside(const OpenCells::Cell& c, const ExactVec& x) {
-  for (const ExactVec& n : c.normals) {
-    if (exact::sign_dot(x, n) != Sign::kPositive) return false;
+bool strictly_inside(const OpenCells::Cell& c, std::span<const exact::UnitEstimate> normals, const ExactVec& x,
+                     const exact::UnitEstimate& ex) {
+  for (size_t k = 0; k < c.normals.size(); ++k) {
+    if (exact::sign_dot(x, c.normals[k], ex, normals[k]) != Sign::kPositive) return false;
   }
   return true;
 }
@@ -98,15 +98,17 @@ std::vector<uint32_t> OpenCells::near(const sphere::Box& query) {
 bool OpenCells::hold(const ExactVec& u) {
   if (!tree_) index();
   const exact::UnitEstimate eu = exact::unit_estimate(u);
+  auto normals_of = [&](uint32_t i) {
+    return std::span<const exact::UnitEstimate>(normal_estimates_.data() + first_normal_[i], cells_[i].normals.size());
+  };
   std::vector<uint32_t> undecided;
   const bool held = tree_->visit_overlapping(sphere::point_box(eu), [&](uint32_t i) {
-    const std::optional<bool> inside = estimated_inside(
-        {normal_estimates_.data() + first_normal_[i], cells_[i].normals.size()}, eu);
+    const std::optional<bool> inside = estimated_inside(normals_of(i), eu);
     if (!inside) undecided.push_back(i);
     return inside == true;
   });
   return held || std::any_of(undecided.begin(), undecided.end(),
-                             [&](uint32_t i) { return strictly_inside(cells_[i], u); });
+                             [&](uint32_t i) { return strictly_inside(cells_[i], normals_of(i), u, eu); });
 }
 
 std::vector<sphere::Arc> OpenCells::uncovered(const sphere::Arc& open_arc) {
