@@ -168,22 +168,6 @@ int edge_to_corner_side(const SolidMesh& mesh, const std::array<uint32_t, 3>& e,
   return -static_cast<int>(orient3d(P[q], P[e[0]], P[e[1]], P[e[2]]));
 }
 
-// The side of the circle of arc (a, b) - p that its contacts may occlude, relative to
-// (a - p) x (b - p): where the triangles at (a, b) reach, and away from where S's
-// triangles at p reach (0 when both sides, or neither, can be told).
-int corner_to_edge_side(const SolidMesh& mesh, uint32_t p, const Fan& at_p, const std::array<uint32_t, 4>& e) {
-  const auto& P = mesh.points;
-  bool pos = false, neg = false;
-  auto note = [&](Sign s) {
-    pos = pos || s == Sign::kPositive;
-    neg = neg || s == Sign::kNegative;
-  };
-  note(orient3d(P[p], P[e[0]], P[e[1]], P[e[2]]));
-  note(orient3d(P[p], P[e[0]], P[e[1]], P[e[3]]));
-  for (uint32_t s : at_p.neighbours) note(-orient3d(P[p], P[e[0]], P[e[1]], P[s]));
-  return pos == neg ? 0 : pos ? 1 : -1;
-}
-
 // The contact tests below are true when the contact cannot be a seam's: it occludes u, or
 // u is not in the open LVM.
 //
@@ -203,9 +187,14 @@ bool edge_to_corner_rules_out(const SolidMesh& mesh, const std::array<uint32_t, 
 }
 
 // From border corner p (S's triangles there: at_p) to inside edge (a, b) with triangles
-// (a, b, c) and (b, a, d): occluding when a triangle at the edge and one of S reach
-// strictly to one side of the plane (a, b, p).
-bool corner_to_edge_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p, const std::array<uint32_t, 4>& e) {
+// (a, b, c) and (b, a, d): nothing when a triangle at the edge and one of S reach
+// strictly to one side of the plane (a, b, p), as the contact then occludes; else the
+// side of the circle of arc (a, b) - p that its contacts may occlude, relative to
+// (a - p) x (b - p): where the triangles at (a, b) reach, and away from where S's
+// triangles at p reach (0 when both sides, or neither, can be told). One plane decides
+// both, as orient3d(p, a, b, x) is orient3d(a, b, p, x).
+std::optional<int> corner_to_edge_contact(const SolidMesh& mesh, uint32_t p, const Fan& at_p,
+                                          const std::array<uint32_t, 4>& e) {
   const auto& P = mesh.points;
   const exact::PlaneSide plane(P[e[0]], P[e[1]], P[p]);
   const Sign c = plane(P[e[2]]);
@@ -213,12 +202,20 @@ bool corner_to_edge_rules_out(const SolidMesh& mesh, uint32_t p, const Fan& at_p
   for (const auto& [x, y] : at_p.wedges) {
     const Sign sx = plane(P[x]);
     const Sign sy = plane(P[y]);
-    if (sx == Sign::kZero && sy == Sign::kZero) return true;  // in the plane of S's triangle
+    if (sx == Sign::kZero && sy == Sign::kZero) return std::nullopt;  // in the plane of S's triangle
     for (Sign side : {sx, sy}) {
-      if (side != Sign::kZero && (side == c || side == d)) return true;
+      if (side != Sign::kZero && (side == c || side == d)) return std::nullopt;
     }
   }
-  return false;
+  bool pos = false, neg = false;
+  auto note = [&](Sign s) {
+    pos = pos || s == Sign::kPositive;
+    neg = neg || s == Sign::kNegative;
+  };
+  note(c);
+  note(d);
+  for (uint32_t s : at_p.neighbours) note(-plane(P[s]));
+  return pos == neg ? 0 : pos ? 1 : -1;
 }
 
 // From border corner p to corner q: occluding when, seen along u = q - p, an edge at q
@@ -322,8 +319,9 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
     const auto& e = occ.edges[i];
     s_corner.for_each_meeting(o_edge[i].data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
-      if (p != e[0] && p != e[1] && !corner_to_edge_rules_out(mesh, p, fan_p, e)) {
-        add_arc(direction, p, e[0], p, e[1], corner_to_edge_side(mesh, p, fan_p, e), open, at_edge[i].arcs);
+      if (p == e[0] || p == e[1]) return true;
+      if (const std::optional<int> side = corner_to_edge_contact(mesh, p, fan_p, e)) {
+        add_arc(direction, p, e[0], p, e[1], *side, open, at_edge[i].arcs);
       }
       return true;
     });
