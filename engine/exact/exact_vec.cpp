@@ -14,6 +14,7 @@
 #include "exact/block_cache.h"
 #include "exact/dyadic.h"
 #include "exact/filtered.h"
+#include "exact/float_steps.h"
 
 namespace gvm::exact {
 namespace {
@@ -225,13 +226,13 @@ bool odd(double d) { return (std::bit_cast<uint64_t>(d) & 1) != 0; }
 // last place off: steps towards it while it lies past a midpoint.
 double nearest_root(const Dyadic& x2, const Dyadic& s, double r) {
   for (;;) {
-    const double up = std::nextafter(r, INFINITY);
+    const double up = next_up(r);
     const Sign past = past_midpoint(x2, s, r, up);
     if (past == Sign::kNegative || (past == Sign::kZero && !odd(r))) break;
     r = up;
   }
   while (r > 0) {
-    const double down = std::nextafter(r, 0.0);
+    const double down = next_down(r);  // r > 0
     const Sign past = past_midpoint(x2, s, down, r);
     if (past == Sign::kPositive || (past == Sign::kZero && !odd(r))) break;
     r = down;
@@ -343,12 +344,12 @@ UnitEstimate unit_estimate(const ExactVec& a) {
   double top = 0;
   for (int i = 0; i < 3; ++i) top = std::max(top, std::fabs(v[i].value()) + v[i].error());
   if (!(top > 0) || !std::isfinite(top)) return {a.unit(), 0x1p-40};
-  const int k = std::ilogb(top);
+  const int k = binary_exponent(top);
   double w[3], len2 = 0, err2 = 0;
   for (int i = 0; i < 3; ++i) {
-    w[i] = std::ldexp(v[i].value(), -k);
+    w[i] = scale_by_power_of_two(v[i].value(), -k);
     len2 += w[i] * w[i];
-    const double f = std::ldexp(v[i].error(), -k) + 0x1p-1074;
+    const double f = scale_by_power_of_two(v[i].error(), -k) + 0x1p-1074;
     err2 += f * f + DBL_MIN;  // DBL_MIN: whatever the square lost to underflow
   }
   const double err = std::sqrt(err2) * (1 + 0x1p-40);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "exact/float_steps.h"
+
 namespace gvm::sphere {
 namespace {
 
@@ -22,8 +24,8 @@ Box merge(const Box& a, const Box& b) {
 // lo rounded down and hi rounded up: a box computed in doubles still holds the exact one.
 void round_outwards(Box& b) {
   for (int i = 0; i < 3; ++i) {
-    b.lo[i] = std::nextafter(b.lo[i], -HUGE_VAL);
-    b.hi[i] = std::nextafter(b.hi[i], HUGE_VAL);
+    b.lo[i] = exact::next_down(b.lo[i]);
+    b.hi[i] = exact::next_up(b.hi[i]);
   }
 }
 
