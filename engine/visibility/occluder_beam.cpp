@@ -69,16 +69,30 @@ class LvmBound {
     full_ = lvm.is_full_sphere();
   }
 
+  // asin and acos are monotone, so the extreme sines and cosines are found first and each
+  // kind of cell costs one call: asin per normal was 8% of prusa_y-motor-holder.
   double distance_lower_bound(const D3& w) const {
     if (full_) return 0;
     double best = 4;
-    for (const auto& normals : faces_) {
-      double d = 0;
-      for (const D3& n : normals) d = std::max(d, std::asin(std::clamp(-dot(w, n), 0.0, 1.0)));
-      best = std::min(best, d);
+    if (!faces_.empty()) {
+      double nearest = 1;  // the sine of the nearest face's distance
+      for (const auto& normals : faces_) {
+        double farthest_side = 0;
+        for (const D3& n : normals) farthest_side = std::max(farthest_side, std::clamp(-dot(w, n), 0.0, 1.0));
+        nearest = std::min(nearest, farthest_side);
+      }
+      best = std::asin(nearest);
     }
-    for (const D3& n : circles_) best = std::min(best, std::asin(std::min(1.0, std::fabs(dot(w, n)))));
-    for (const D3& p : points_) best = std::min(best, std::acos(std::clamp(dot(w, p), -1.0, 1.0)));
+    if (!circles_.empty()) {
+      double sine = 1;
+      for (const D3& n : circles_) sine = std::min(sine, std::fabs(dot(w, n)));
+      best = std::min(best, std::asin(sine));
+    }
+    if (!points_.empty()) {
+      double cosine = -1;
+      for (const D3& p : points_) cosine = std::max(cosine, std::clamp(dot(w, p), -1.0, 1.0));
+      best = std::min(best, std::acos(cosine));
+    }
     return best;
   }
 
