@@ -168,8 +168,8 @@ int edge_to_corner_side(const SolidMesh& mesh, const std::array<uint32_t, 3>& e,
   return -static_cast<int>(orient3d(P[q], P[e[0]], P[e[1]], P[e[2]]));
 }
 
-// The contact tests below are true when the contact cannot be a seam's: it occludes u, or
-// u is not in the open LVM.
+// The contact tests below are true (corner_to_edge_contact: empty) when the contact
+// cannot be a seam's: it occludes u, or u is not in the open LVM.
 //
 // From inside border edge (a, b) of triangle (a, b, r) of S to corner q: occluding when a
 // neighbour of q lies strictly on r's side of the plane (a, b, q).
