@@ -52,7 +52,7 @@ void BM_EnvelopeRealFeature(benchmark::State& state) {
   state.counters["feature"] = f.feature;
   state.counters["S"] = double(f.s.size());
   state.counters["O_S"] = double(f.o.size());
-  state.counters["window_halfspaces"] = window ? double(window->size()) : 0.0;
+  state.counters["window_halfspaces"] = window ? double(window->half_spaces()) : 0.0;
   state.counters["tentative"] = double(stats.tentative_faces);
   state.counters["outside_window"] = double(stats.outside_window);
   state.counters["kept"] = double(stats.kept_faces);
@@ -79,9 +79,9 @@ void BM_DirectionWindowBuild(benchmark::State& state) {
   const double bound = coordinate_bound(f.part->mesh(), f.s, f.o);
   for (auto _ : state) {
     DirectionWindow w(f.lvm, bound);
-    benchmark::DoNotOptimize(w.size());
+    benchmark::DoNotOptimize(w.half_spaces());
   }
-  state.counters["window_halfspaces"] = double(f.window->size());
+  state.counters["window_halfspaces"] = double(f.window->half_spaces());
 }
 BENCHMARK(BM_DirectionWindowBuild);
 

@@ -54,17 +54,17 @@ struct Face {
 Point3 sub(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 
 bool window_may_meet(const DirectionWindow& w, const Face& f) {
-  const size_t n = w.size();
-  std::vector<double> q_max(n, -std::numeric_limits<double>::infinity());
-  std::vector<double> p_min(n, std::numeric_limits<double>::infinity()), tmp(n);
-  for (const Point3& q : f.q) {
-    w.values(q, tmp.data());
-    for (size_t k = 0; k < n; ++k) q_max[k] = std::max(q_max[k], tmp[k]);
-  }
-  for (const Point3& p : f.p) {
-    w.values(p, tmp.data());
-    for (size_t k = 0; k < n; ++k) p_min[k] = std::min(p_min[k], tmp[k]);
-  }
+  const size_t n = w.row_size();
+  std::vector<double> q_max(n), p_min(n), tmp(n);
+  auto row = [&](const std::vector<Point3>& points, bool largest, std::vector<double>& out) {
+    w.values(points[0], out.data());
+    for (size_t i = 1; i < points.size(); ++i) {
+      w.values(points[i], tmp.data());
+      w.fold(out.data(), tmp.data(), largest);
+    }
+  };
+  row(f.q, true, q_max);
+  row(f.p, false, p_min);
   return w.may_meet(q_max.data(), p_min.data());
 }
 
@@ -187,7 +187,7 @@ TEST(DirectionWindow, RejectedFacesMissTheImage) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
     const DirectionWindow w(c.image, kBound);
-    ASSERT_GT(w.size(), 0u);
+    ASSERT_GT(w.half_spaces(), 0u);
     int rejected = 0, accepted = 0, exact_hits = 0;
     for (int t = 0; t < 3000; ++t) {
       Face f;
@@ -321,7 +321,7 @@ TEST(DirectionWindow, EasyFacesAreDecided) {
 
 TEST(DirectionWindow, FullSphereKeepsEverything) {
   const DirectionWindow w(SphericalImage::full_sphere(), kBound);
-  EXPECT_EQ(w.size(), 0u);
+  EXPECT_EQ(w.half_spaces(), 0u);
   EXPECT_TRUE(w.may_meet(nullptr, nullptr));
   std::mt19937_64 rng(1);
   for (int t = 0; t < 100; ++t) {
@@ -413,6 +413,57 @@ TEST(DirectionWindow, NoCoverForFacesNoSmallCapHolds) {
                               {{0, -1, 1}, {-1, 0, 1}, {0, 1, 1}, {1, 0, 1}}}));
   EXPECT_FALSE(DirectionWindow::covering(band, {}, kBound));
   EXPECT_FALSE(DirectionWindow::covering(SphericalImage::full_sphere(), {}, kBound));
+}
+
+// The window's answer is that of its sides taken one by one (a face is left out when one
+// side of every cell has it wholly outside), however it reaches it: here on a 420-sided
+// polygon much like a pocket floor's LVM, with faces around its border, where a shortcut
+// that took the polygon for a round cap would keep faces a side rules out.
+TEST(DirectionWindow, ManySidedCellDecidesAsItsSides) {
+  constexpr int kSides = 420;
+  const double radius = 54 * M_PI / 180;
+  // The cap around (0, 0, 1), tilted about x by 0.3 radians so that no axis is special.
+  auto direction = [](double polar, double azimuth) {
+    const Point3 d{std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)};
+    const double c = std::cos(0.3), s = std::sin(0.3);
+    return Point3{d.x, c * d.y - s * d.z, s * d.y + c * d.z};
+  };
+  std::vector<Point3> corners;
+  for (int i = 0; i < kSides; ++i) corners.push_back(direction(radius, 2 * M_PI * i / kSides));
+  const SphericalImage image = polygon(corners);
+  const DirectionWindow w(image, kBound);
+  ASSERT_EQ(w.half_spaces(), size_t(kSides));
+  auto sides_say_meet = [&](const Face& f) {
+    for (const Arc& arc : image.faces()[0].loops[0].arcs) {
+      const auto m = arc.normal.unit();
+      auto value = [&](const Point3& x) { return m[0] * x.x + m[1] * x.y + m[2] * x.z; };
+      double q_max = -HUGE_VAL, p_min = HUGE_VAL;
+      for (const Point3& q : f.q) q_max = std::max(q_max, value(q));
+      for (const Point3& p : f.p) p_min = std::min(p_min, value(p));
+      if (q_max - p_min < -1e-9 * kBound) return false;
+    }
+    return true;
+  };
+  std::mt19937_64 rng(420);
+  std::uniform_real_distribution<double> azimuth(0, 2 * M_PI), off(-0.02, 0.02), jitter(-1, 1);
+  int kept = 0, left_out = 0;
+  for (int t = 0; t < 20000; ++t) {
+    // q0 - p0 about 60 units along a direction within 0.02 radians of the border (the
+    // corners' circle; the sides cut inside it by up to 1 - cos(pi / 420) of the radius).
+    Face f;
+    f.p.push_back({jitter(rng) * 20, jitter(rng) * 20, jitter(rng) * 20});
+    const Point3 d = direction(radius + off(rng), azimuth(rng));
+    f.q.push_back({f.p[0].x + 60 * d.x, f.p[0].y + 60 * d.y, f.p[0].z + 60 * d.z});
+    for (int i = 1 + int(rng() % 3); i > 1; --i) {
+      const Point3& q = f.q[0];
+      f.q.push_back({q.x + jitter(rng) * 0.3, q.y + jitter(rng) * 0.3, q.z + jitter(rng) * 0.3});
+    }
+    const bool meet = sides_say_meet(f);
+    ASSERT_EQ(window_may_meet(w, f), meet) << describe(f);
+    (meet ? kept : left_out)++;
+  }
+  EXPECT_GT(kept, 2000);
+  EXPECT_GT(left_out, 2000);
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
                                                     std::span<const uint32_t> o,
                                                     const DirectionWindow* window,
                                                     ConvexDecompositionStatistics* stats) {
-  const size_t K = window ? window->size() : 0;
+  const size_t K = window ? window->row_size() : 0;
   // Window values at the vertices of each triangle of O (max) and of S (min).
   const WindowRows o_max(window, o.size(), K ? window->extremes(mesh, o, true) : std::vector<double>{},
                          WindowRows::Side::occluder);

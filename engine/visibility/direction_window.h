@@ -6,7 +6,8 @@
 // The window holds, for every cell of L, great-circle half-spaces {x : m . x >= 0} that
 // contain the cell; a face whose vertex directions q - p all lie strictly outside one
 // half-space of every cell is such a face. Decided in double precision with a certified
-// slack, so that a face is left out only when that is certain.
+// slack, so that a face is left out only when that is certain. A face with one direction
+// in a cell's inscribed cap meets the cell without a look at its sides.
 #pragma once
 
 #include <algorithm>
@@ -35,15 +36,21 @@ class DirectionWindow {
                                                  double coordinate_bound);
 
   // Number of half-spaces (0: the window holds every direction).
-  size_t size() const { return normals_.size(); }
-  // out[k] = m_k . x for every half-space k.
+  size_t half_spaces() const { return normals_.size(); }
+  // Values per row (0 when the window holds every direction): m_k . x for every
+  // half-space k, then the coordinates of one point x of the row's element, its anchor.
+  size_t row_size() const { return normals_.empty() ? 0 : normals_.size() + 3; }
+  // The row of the point x.
   void values(const Point3& x, double* out) const;
+  // Folds the row of another point of the same element into `row`: the largest (or
+  // smallest) m_k . x; the anchor stays.
+  void fold(double* row, const double* values, bool largest) const;
   // False only if the directions q - p of a face certainly miss L: q_max[k] is the
   // largest m_k . q over the face's vertices q of O, p_min[k] the smallest m_k . p over
   // its vertices p of S (the face's vertices are all pairs (q, p)).
   bool may_meet(const double* q_max, const double* p_min) const;
-  // For each triangle, the size() largest (or smallest) values m_k . x over its three
-  // vertices, triangle after triangle: the q_max or p_min of may_meet for its pairs.
+  // For each triangle, the row of its three vertices, the largest (or smallest) values,
+  // triangle after triangle: the q_max or p_min of may_meet for its pairs.
   std::vector<double> extremes(const SolidMesh& mesh, std::span<const uint32_t> triangles,
                                bool largest) const;
 
@@ -57,22 +64,36 @@ class DirectionWindow {
   // degrees) of the unit vector `centre`.
   void add_cap(const std::array<double, 3>& centre, double radius, const sphere::Face& within);
 
+  // Ends a cell: the half-spaces added since the last cell, and their inscribed cap.
+  void end_cell();
+
+  // A cap inside a cell: a pair whose anchors' difference lies in it certainly meets the
+  // cell, which a pocket floor's 420-sided LVM otherwise shows only by reading every side.
+  struct InnerCap {
+    std::array<double, 3> centre{0, 0, 0};
+    double cos_radius = 2;  // 2: no cap (c . x > 2 |x| never holds)
+    bool holds(const std::array<double, 3>& x, double norm_x) const;
+  };
+  static InnerCap inscribed_cap(std::span<const std::array<double, 3>> normals);
+
   std::vector<std::array<double, 3>> normals_;
   std::vector<size_t> cell_end_;  // half-spaces of cell c: [cell_end_[c - 1], cell_end_[c])
+  std::vector<InnerCap> inner_;   // of each cell
   double slack_ = 0;
 };
 
-// The window's values for one side of may_meet, row after row (each row size() values:
-// the largest over a triangle, edge or point of O, or the smallest over one of S), with
-// the extremes over each run of kRun rows. A row of the other side that certainly misses
-// a run's extremes misses every row of the run, so the run's pairs are left out by one
-// test: the 103k-triangle pocket part spent a quarter of its time testing pairs one by one.
+// The window's values for one side of may_meet, row after row (each row row_size()
+// values: the largest over a triangle, edge or point of O, or the smallest over one of S),
+// with the extremes over each run of kRun rows, anchored at the run's first anchor. A row
+// of the other side that certainly misses a run's extremes misses every row of the run, so
+// the run's pairs are left out by one test: the 103k-triangle pocket part spent a quarter
+// of its time testing pairs one by one.
 class WindowRows {
  public:
   enum class Side { occluder, surface };  // rows of q_max (of O) or of p_min (of S)
   static constexpr size_t kRun = 32;
 
-  // count rows in `rows` (count * window->size() values). window may be null or hold
+  // count rows in `rows` (count * window->row_size() values). window may be null or hold
   // every direction: every pair then may meet.
   WindowRows(const DirectionWindow* window, size_t count, std::vector<double> rows, Side side);
 

@@ -152,7 +152,7 @@ void for_each_chunked(size_t n, std::vector<Partial>& out, const Body& body) {
 class WindowValues {
  public:
   WindowValues(const DirectionWindow* window, const SolidMesh& mesh)
-      : window_(window), mesh_(mesh), k_(window ? window->size() : 0) {}
+      : window_(window), mesh_(mesh), k_(window ? window->row_size() : 0) {}
 
   bool active() const { return k_ > 0; }
   // Values at each vertex of a point list.
@@ -167,10 +167,8 @@ class WindowValues {
     std::vector<double> v(k_);
     bool first = true;
     for (uint32_t p : points) {
-      window_->values(mesh_.points[p], v.data());
-      for (size_t k = 0; k < k_; ++k) {
-        out[k] = first ? v[k] : (largest ? std::max(out[k], v[k]) : std::min(out[k], v[k]));
-      }
+      window_->values(mesh_.points[p], first ? out : v.data());
+      if (!first) window_->fold(out, v.data(), largest);
       first = false;
     }
   }

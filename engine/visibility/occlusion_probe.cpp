@@ -207,7 +207,7 @@ template <class Visit>
 void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Visit& visit) const {
   // Pairs whose segments certainly miss the cell are left out (certified double filter).
   const DirectionWindow window(cell, coordinate_bound_);
-  const size_t K = window.size();
+  const size_t K = window.row_size();
   const WindowRows o_max(&window, o_.size(), window.extremes(mesh_, o_, true), WindowRows::Side::occluder);
   const std::vector<double> s_min = window.extremes(mesh_, s_, false);
   tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
@@ -367,7 +367,7 @@ OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in
   sphere::SphericalImage cell;
   cell.add_curve(open_arc);
   const DirectionWindow window(cell, coordinate_bound_);
-  const size_t K = window.size();
+  const size_t K = window.row_size();
   const std::vector<double> o_max = window.extremes(mesh_, o_, true);
   Strips strips;
   struct Found {

@@ -258,7 +258,7 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   const OpenLvm open(lvm);
   const ContactDirections direction(mesh);
   // The window's values at every point used, for the certain misses in double precision.
-  const size_t k = window.size();
+  const size_t k = window.row_size();
   // The window's values m_k . x: the smallest over each border edge and at each border
   // corner of S, at each corner and the largest over each edge of O, computed once.
   std::unordered_map<uint32_t, std::vector<double>> at;
@@ -269,8 +269,7 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   };
   auto extreme = [&](uint32_t v0, uint32_t v1, bool largest) {
     std::vector<double> out = values(v0);
-    const std::vector<double>& other = values(v1);
-    for (size_t i = 0; i < k; ++i) out[i] = largest ? std::max(out[i], other[i]) : std::min(out[i], other[i]);
+    if (k) window.fold(out.data(), values(v1).data(), largest);
     return out;
   };
   // The rows of S's elements, in runs that the window rules out at once.
