@@ -182,6 +182,24 @@ void DirectionWindow::fold(double* row, const double* values, bool largest) cons
   for (size_t k = 0; k < normals_.size(); ++k) row[k] = largest ? std::max(row[k], values[k]) : std::min(row[k], values[k]);
 }
 
+void DirectionWindow::row(const SolidMesh& mesh, std::initializer_list<uint32_t> vertices, bool largest,
+                          double* out) const {
+  if (normals_.empty()) return;
+  const size_t K = normals_.size();
+  for (size_t k = 0; k < K; ++k) {
+    const D3& m = normals_[k];
+    bool first = true;
+    for (uint32_t v : vertices) {
+      const Point3& x = mesh.points[v];
+      const double value = m[0] * x[0] + m[1] * x[1] + m[2] * x[2];
+      out[k] = first ? value : largest ? std::max(out[k], value) : std::min(out[k], value);
+      first = false;
+    }
+  }
+  const Point3& anchor = mesh.points[*vertices.begin()];
+  out[K] = anchor[0], out[K + 1] = anchor[1], out[K + 2] = anchor[2];
+}
+
 double coordinate_bound(const SolidMesh& mesh, std::span<const uint32_t> a,
                         std::span<const uint32_t> b) {
   double bound = 0;
@@ -200,15 +218,10 @@ std::vector<double> DirectionWindow::extremes(const SolidMesh& mesh,
                                              std::span<const uint32_t> triangles,
                                              bool largest) const {
   const size_t R = row_size();
-  std::vector<double> out(triangles.size() * R), v(R);
+  std::vector<double> out(triangles.size() * R);
   for (size_t i = 0; i < triangles.size(); ++i) {
     const Triangle& t = mesh.triangles[triangles[i]];
-    double* row = &out[i * R];
-    values(mesh.points[t[0]], row);
-    for (int j = 1; j < 3; ++j) {
-      values(mesh.points[t[j]], v.data());
-      fold(row, v.data(), largest);
-    }
+    row(mesh, {t[0], t[1], t[2]}, largest, &out[i * R]);
   }
   return out;
 }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <vector>
@@ -49,8 +50,11 @@ class DirectionWindow {
   // largest m_k . q over the face's vertices q of O, p_min[k] the smallest m_k . p over
   // its vertices p of S (the face's vertices are all pairs (q, p)).
   bool may_meet(const double* q_max, const double* p_min) const;
-  // For each triangle, the row of its three vertices, the largest (or smallest) values,
-  // triangle after triangle: the q_max or p_min of may_meet for its pairs.
+  // The row of a triangle, edge or point of the mesh: the largest (or smallest) values
+  // over its vertices, anchored at the first.
+  void row(const SolidMesh& mesh, std::initializer_list<uint32_t> vertices, bool largest, double* out) const;
+  // The rows of triangles, one after another: the q_max or p_min of may_meet for their
+  // pairs.
   std::vector<double> extremes(const SolidMesh& mesh, std::span<const uint32_t> triangles,
                                bool largest) const;
 

@@ -147,39 +147,6 @@ void for_each_chunked(size_t n, std::vector<Partial>& out, const Body& body) {
   interruption_point();  // chunks left undone when cancelled
 }
 
-// The window's values at the points of O and S, and the extremes over faces and edges,
-// so that the test of one tentative face is a few comparisons.
-class WindowValues {
- public:
-  WindowValues(const DirectionWindow* window, const SolidMesh& mesh)
-      : window_(window), mesh_(mesh), k_(window ? window->row_size() : 0) {}
-
-  bool active() const { return k_ > 0; }
-  // Values at each vertex of a point list.
-  std::vector<double> at(std::span<const uint32_t> points) const {
-    std::vector<double> out(points.size() * k_);
-    if (!active()) return out;
-    for (size_t i = 0; i < points.size(); ++i) window_->values(mesh_.points[points[i]], &out[i * k_]);
-    return out;
-  }
-  // Extremes (max when `largest`, else min) over the given points, into out[0..k).
-  void extreme(std::initializer_list<uint32_t> points, bool largest, double* out) const {
-    std::vector<double> v(k_);
-    bool first = true;
-    for (uint32_t p : points) {
-      window_->values(mesh_.points[p], first ? out : v.data());
-      if (!first) window_->fold(out, v.data(), largest);
-      first = false;
-    }
-  }
-  size_t size() const { return k_; }
-
- private:
-  const DirectionWindow* window_;
-  const SolidMesh& mesh_;
-  size_t k_;
-};
-
 }  // namespace
 
 std::vector<EnvelopeBorderEdge> border_chain(std::span<const EnvelopeFace> faces) {
@@ -196,15 +163,22 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
   const SurfaceTopology ts(mesh, s), to(mesh, o);
   const auto& P = mesh.points;
   std::vector<Partial> parts;
-  const WindowValues win(window, mesh);
-  const size_t K = win.size();
+  // The window's rows of the points of O and S, and of S's edges, so that the test of one
+  // tentative face is a few comparisons.
+  const size_t K = window ? window->row_size() : 0;
+  auto row = [&](std::initializer_list<uint32_t> vertices, bool largest, double* out) {
+    if (K) window->row(mesh, vertices, largest, out);
+  };
+  auto point_rows = [&](std::span<const uint32_t> points, bool largest) {
+    std::vector<double> out(points.size() * K);
+    for (size_t i = 0; i < points.size(); ++i) row({points[i]}, largest, &out[i * K]);
+    return out;
+  };
   using Side = WindowRows::Side;
-  const WindowRows o_vertex(window, to.vertices().size(), win.at(to.vertices()), Side::occluder);
-  const WindowRows s_vertex(window, ts.vertices().size(), win.at(ts.vertices()), Side::surface);
+  const WindowRows o_vertex(window, to.vertices().size(), point_rows(to.vertices(), true), Side::occluder);
+  const WindowRows s_vertex(window, ts.vertices().size(), point_rows(ts.vertices(), false), Side::surface);
   std::vector<double> s_edge_min(ts.edges().size() * K);
-  for (size_t i = 0; i < ts.edges().size() && win.active(); ++i) {
-    win.extreme({ts.edges()[i].a, ts.edges()[i].b}, false, &s_edge_min[i * K]);
-  }
+  for (size_t i = 0; i < ts.edges().size(); ++i) row({ts.edges()[i].a, ts.edges()[i].b}, false, &s_edge_min[i * K]);
   const WindowRows s_edge(window, ts.edges().size(), std::move(s_edge_min), Side::surface);
   // Pairs the window rules out are counted, not visited.
   auto visit_meeting = [](const WindowRows& rows, const std::vector<double>& other, Partial& out, auto&& visit) {
@@ -224,7 +198,7 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     const Triangle& f = mesh.triangles[s[si]];
     const exact::PlaneSide plane(P[f[0]], P[f[1]], P[f[2]]);
     std::vector<double> p_min(K);
-    if (win.active()) win.extreme({f[0], f[1], f[2]}, false, p_min.data());
+    row({f[0], f[1], f[2]}, false, p_min.data());
     visit_meeting(o_vertex, p_min, out, [&](size_t i) {
       const uint32_t q = to.vertices()[i];
       CriticalSet crit;
@@ -245,7 +219,7 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     const Triangle& f = mesh.triangles[o[oi]];
     const exact::PlaneSide plane(P[f[0]], P[f[1]], P[f[2]]);
     std::vector<double> q_max(K);
-    if (win.active()) win.extreme({f[0], f[1], f[2]}, true, q_max.data());
+    row({f[0], f[1], f[2]}, true, q_max.data());
     visit_meeting(s_vertex, q_max, out, [&](size_t i) {
       const uint32_t p = ts.vertices()[i];
       CriticalSet crit;
@@ -267,7 +241,7 @@ EffectiveMinkowskiEnvelope compute_effective_minkowski_envelope(const SolidMesh&
     const auto& eo = to.edges()[ei];
     const Point3 &q0 = P[eo.a], &q1 = P[eo.b];
     std::vector<double> q_max(K);
-    if (win.active()) win.extreme({eo.a, eo.b}, true, q_max.data());
+    row({eo.a, eo.b}, true, q_max.data());
     visit_meeting(s_edge, q_max, out, [&](size_t j) {
       const auto& es = ts.edges()[j];
       const Point3 &p0 = P[es.a], &p1 = P[es.b];

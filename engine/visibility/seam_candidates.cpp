@@ -257,37 +257,25 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   const Occluder occ = occluder_of(mesh, o);
   const OpenLvm open(lvm);
   const ContactDirections direction(mesh);
-  // The window's values at every point used, for the certain misses in double precision.
+  // The window's rows, for the certain misses in double precision: the smallest values
+  // over each border edge and at each border corner of S, computed once; at each corner
+  // and the largest over each edge of O, where they are used (kept for all of O, they
+  // filled 0.7 GB on the pocket part).
   const size_t k = window.row_size();
-  // The window's values m_k . x: the smallest over each border edge and at each border
-  // corner of S, at each corner and the largest over each edge of O, computed once.
-  std::unordered_map<uint32_t, std::vector<double>> at;
-  auto values = [&](uint32_t v) -> const std::vector<double>& {
-    auto [it, added] = at.try_emplace(v, k);
-    if (added && k) window.values(mesh.points[v], it->second.data());
-    return it->second;
-  };
-  auto extreme = [&](uint32_t v0, uint32_t v1, bool largest) {
-    std::vector<double> out = values(v0);
-    if (k) window.fold(out.data(), values(v1).data(), largest);
-    return out;
-  };
-  // The rows of S's elements, in runs that the window rules out at once.
   auto rows_of_s = [&](const auto& elements, auto&& row_of) {
-    std::vector<double> flat;
-    flat.reserve(elements.size() * k);
-    for (const auto& e : elements) {
-      const std::vector<double> r = row_of(e);
-      flat.insert(flat.end(), r.begin(), r.end());
-    }
+    std::vector<double> flat(elements.size() * k);
+    for (size_t i = 0; i < elements.size() && k; ++i) row_of(elements[i], &flat[i * k]);
     return WindowRows(&window, elements.size(), std::move(flat), WindowRows::Side::surface);
   };
-  auto edge_min = [&](const auto& e) { return extreme(e[0], e[1], false); };
-  auto corner_values = [&](const auto& c) { return values(c.first); };
-  const WindowRows s_edge = rows_of_s(border.edges, edge_min), s_corner = rows_of_s(border.corners, corner_values);
-  std::vector<std::vector<double>> o_corner, o_edge;
-  for (const auto& c : occ.corners) o_corner.push_back(values(c.first));
-  for (const auto& e : occ.edges) o_edge.push_back(extreme(e[0], e[1], true));
+  const WindowRows s_edge =
+      rows_of_s(border.edges, [&](const auto& e, double* out) { window.row(mesh, {e[0], e[1]}, false, out); });
+  const WindowRows s_corner =
+      rows_of_s(border.corners, [&](const auto& c, double* out) { window.row(mesh, {c.first}, false, out); });
+  auto o_row = [&](std::initializer_list<uint32_t> vertices) {
+    std::vector<double> row(k);
+    if (k) window.row(mesh, vertices, true, row.data());
+    return row;
+  };
   // One slot per element of O, filled in parallel and read in order (deterministic).
   struct Found {
     std::vector<GrazingArc> arcs;
@@ -298,14 +286,15 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
     const auto& [q, triangle] = occ.corners[i];
     std::optional<Fan> star_q;  // built for the first contact that gets that far
     auto fan_q = [&]() -> const Fan& { return star_q ? *star_q : star_q.emplace(star(mesh, triangle, q)); };
-    s_edge.for_each_meeting(o_corner[i].data(), [&](size_t j) {
+    const std::vector<double> row = o_row({q});
+    s_edge.for_each_meeting(row.data(), [&](size_t j) {
       const auto& e = border.edges[j];
       if (q != e[0] && q != e[1] && !edge_to_corner_rules_out(mesh, e, q, fan_q())) {
         add_arc(direction, e[0], q, e[1], q, edge_to_corner_side(mesh, e, q), open, at_corner[i].arcs);
       }
       return true;
     });
-    s_corner.for_each_meeting(o_corner[i].data(), [&](size_t j) {
+    s_corner.for_each_meeting(row.data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
       if (q != p && !corner_to_corner_rules_out(mesh, p, fan_p, q, fan_q())) {
         const ExactVec u = direction(p, q);
@@ -316,7 +305,8 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   });
   tbb::parallel_for(size_t{0}, occ.edges.size(), [&](size_t i) {
     const auto& e = occ.edges[i];
-    s_corner.for_each_meeting(o_edge[i].data(), [&](size_t j) {
+    const std::vector<double> row = o_row({e[0], e[1]});
+    s_corner.for_each_meeting(row.data(), [&](size_t j) {
       const auto& [p, fan_p] = border.corners[j];
       if (p == e[0] || p == e[1]) return true;
       if (const std::optional<int> side = corner_to_edge_contact(mesh, p, fan_p, e)) {
