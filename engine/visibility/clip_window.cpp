@@ -164,6 +164,7 @@ std::vector<FanPiece> fan_pieces(const MinorBoundary& b, const ExactVec& c) {
 ClipWindow::ClipWindow(std::vector<ExactVec> normals) : normals_(std::move(normals)) {
   const size_t k = normals_.size();
   for (size_t i = 0; i < k; ++i) corners_.push_back(exact::cross(normals_[(i + k - 1) % k], normals_[i]));
+  for (const ExactVec& w : normals_) estimates_.push_back(exact::unit_estimate(w));
 }
 
 bool ClipWindow::proper() const {
@@ -227,16 +228,19 @@ std::vector<ClipWindow> ClipWindow::covering(const sphere::SphericalImage& lvm) 
 }
 
 bool ClipWindow::contains_strictly(const ExactVec& u) const {
-  for (const ExactVec& w : normals_) {
-    if (exact::sign_dot(w, u) != Sign::kPositive) return false;
+  const exact::UnitEstimate eu = exact::unit_estimate(u);
+  for (size_t j = 0; j < normals_.size(); ++j) {
+    if (side(j, u, eu) != Sign::kPositive) return false;
   }
   return true;
 }
 
 bool ClipWindow::misses(std::span<const ExactVec> polygon) const {
-  for (const ExactVec& w : normals_) {
+  std::vector<exact::UnitEstimate> ev;
+  for (const ExactVec& v : polygon) ev.push_back(exact::unit_estimate(v));
+  for (size_t j = 0; j < normals_.size(); ++j) {
     bool any_positive = false;
-    for (const ExactVec& v : polygon) any_positive = any_positive || exact::sign_dot(w, v) == Sign::kPositive;
+    for (size_t i = 0; i < polygon.size() && !any_positive; ++i) any_positive = side(j, polygon[i], ev[i]) == Sign::kPositive;
     if (!any_positive) return true;
   }
   return false;
@@ -261,9 +265,10 @@ std::optional<std::vector<sphere::ArrangementArc>> ClipWindow::clip(
   std::vector<Sign> from(k), to(k);
   for (const sphere::ArrangementArc& arc : arcs) {
     bool from_inside = true, to_inside = true;
+    const exact::UnitEstimate e_from = exact::unit_estimate(arc.from), e_to = exact::unit_estimate(arc.to);
     for (size_t j = 0; j < k; ++j) {
-      from[j] = exact::sign_dot(normals_[j], arc.from);
-      to[j] = exact::sign_dot(normals_[j], arc.to);
+      from[j] = side(j, arc.from, e_from);
+      to[j] = side(j, arc.to, e_to);
       if (from[j] == Sign::kZero || to[j] == Sign::kZero) return std::nullopt;
       from_inside = from_inside && from[j] == Sign::kPositive;
       to_inside = to_inside && to[j] == Sign::kPositive;
@@ -280,10 +285,11 @@ std::optional<std::vector<sphere::ArrangementArc>> ClipWindow::clip(
       // (from x to) x w = (from . w) to - (to . w) from: on the arc.
       const bool entering = from[j] == Sign::kNegative;
       ExactVec x = entering ? exact::cross(w, arc.normal) : exact::cross(arc.normal, w);
+      const exact::UnitEstimate ex = exact::unit_estimate(x);
       bool on_boundary = true;
       for (size_t l = 0; l < k && on_boundary; ++l) {
         if (l == j) continue;
-        const Sign s = exact::sign_dot(normals_[l], x);
+        const Sign s = side(l, x, ex);
         if (s == Sign::kZero) return std::nullopt;  // through a corner
         on_boundary = s == Sign::kPositive;
       }

@@ -68,7 +68,14 @@ class ClipWindow {
                                        std::span<const exact::ExactVec> vertices);
   bool proper() const;
 
+  // sign_dot of normal j and x, decided from estimates where they can: a window around a
+  // pocket floor has 420 sides, tested against every vertex of every envelope face.
+  Sign side(size_t j, const exact::ExactVec& x, const exact::UnitEstimate& ex) const {
+    return exact::sign_dot(normals_[j], x, estimates_[j], ex);
+  }
+
   std::vector<exact::ExactVec> normals_;
+  std::vector<exact::UnitEstimate> estimates_;  // of the normals
   std::vector<exact::ExactVec> corners_;
 };
 

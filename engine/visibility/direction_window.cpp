@@ -54,14 +54,15 @@ DirectionWindow::InnerCap DirectionWindow::inscribed_cap(std::span<const D3> nor
   double sin_radius = 1;
   for (const D3& m : normals) sin_radius = std::min(sin_radius, dot(m, c));
   if (!(sin_radius > 1e-3)) return {};
-  // The margin (1e-9 radians and more) is far above the rounding of holds(), which is
-  // relative 1e-15 and divided by sin r >= 1e-3.
+  // The margin takes more than 2e-12 off the cap's cos^2 r = 1 - sin^2 r, far above the
+  // rounding of holds(), relative 1e-15.
   sin_radius -= 1e-9;
-  return {c, std::sqrt(1 - sin_radius * sin_radius)};
+  return {c, 1 - sin_radius * sin_radius};
 }
 
-bool DirectionWindow::InnerCap::holds(const D3& x, double norm_x) const {
-  return dot(centre, x) > cos_radius * norm_x;
+bool DirectionWindow::InnerCap::holds(const D3& x, double norm2_x) const {
+  const double d = dot(centre, x);
+  return d > 0 && d * d > cos2_radius * norm2_x;
 }
 
 void DirectionWindow::end_cell() {
@@ -232,11 +233,11 @@ bool DirectionWindow::may_meet(const double* q_max, const double* p_min) const {
   // The anchors' difference is a direction of the face (up to rounding far below the caps'
   // margin): in a cell's inner cap, it shows that no side of the cell separates the face.
   const D3 x{q_max[K] - p_min[K], q_max[K + 1] - p_min[K + 1], q_max[K + 2] - p_min[K + 2]};
-  const double norm_x = norm(x);
+  const double norm2_x = dot(x, x);
   size_t begin = 0;
   for (size_t c = 0; c < cell_end_.size(); ++c) {
     const size_t end = cell_end_[c];
-    if (inner_[c].holds(x, norm_x)) return true;
+    if (inner_[c].holds(x, norm2_x)) return true;
     if (!some_side_separates(q_max, p_min, begin, end, -slack_)) return true;
     begin = end;
   }

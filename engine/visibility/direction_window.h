@@ -75,8 +75,9 @@ class DirectionWindow {
   // cell, which a pocket floor's 420-sided LVM otherwise shows only by reading every side.
   struct InnerCap {
     std::array<double, 3> centre{0, 0, 0};
-    double cos_radius = 2;  // 2: no cap (c . x > 2 |x| never holds)
-    bool holds(const std::array<double, 3>& x, double norm_x) const;
+    double cos2_radius = 4;  // 4: no cap ((c . x)^2 > 4 |x|^2 never holds)
+    // x in the cap, with |x|^2 = norm2_x: no square root for the pairs that miss.
+    bool holds(const std::array<double, 3>& x, double norm2_x) const;
   };
   static InnerCap inscribed_cap(std::span<const std::array<double, 3>> normals);
 
