@@ -36,8 +36,9 @@ bool strictly_inside(const OpenCells::Cell& c, std::span<const exact::UnitEstima
 }
 
 // A box around the closed cell: around its sides, and reaching +-1 along an axis whose
-// direction the cell holds (the only place inside where a coordinate can peak).
-sphere::Box box_of(const OpenCells::Cell& c) {
+// direction the cell may hold (the only place inside where a coordinate can peak).
+// `normals` are the estimates of the cell's normals.
+sphere::Box box_of(const OpenCells::Cell& c, std::span<const exact::UnitEstimate> normals) {
   if (!c.minor_sides || c.vertices.empty()) return {{-1, -1, -1}, {1, 1, 1}};
   std::vector<exact::UnitEstimate> v;
   for (const ExactVec& x : c.vertices) v.push_back(exact::unit_estimate(x));
@@ -50,13 +51,13 @@ sphere::Box box_of(const OpenCells::Cell& c) {
     }
   }
   // The axis e = sign * (unit vector i) is in the cell iff e . n = sign * n_i >= 0 for
-  // every normal n.
+  // every normal n; it may be unless an estimate shows n_i's sign. Exact signs here cost
+  // an exact evaluation for every coordinate that is zero, as most are on CAD parts.
   for (int i = 0; i < 3; ++i) {
     bool plus = true, minus = true;
-    for (const ExactVec& n : c.normals) {
-      const Sign s = exact::sign_of_coordinate(n, i);
-      plus = plus && s != Sign::kNegative;
-      minus = minus && s != Sign::kPositive;
+    for (const exact::UnitEstimate& n : normals) {
+      plus = plus && !(n.unit[i] < -n.radius);
+      minus = minus && !(n.unit[i] > n.radius);
     }
     if (plus) box.hi[i] = 1;
     if (minus) box.lo[i] = -1;
@@ -73,17 +74,21 @@ void OpenCells::absorb(OpenCells&& other) {
 }
 
 void OpenCells::index() {
-  std::vector<sphere::Box> boxes(cells_.size());
-  tbb::parallel_for(size_t{0}, cells_.size(), [&](size_t i) { boxes[i] = box_of(cells_[i]); });
-  tree_.emplace(boxes);
   first_normal_.assign(1, 0);
   for (const Cell& c : cells_) first_normal_.push_back(first_normal_.back() + c.normals.size());
   normal_estimates_.resize(first_normal_.back());
+  std::vector<sphere::Box> boxes(cells_.size());
   tbb::parallel_for(size_t{0}, cells_.size(), [&](size_t i) {
     for (size_t k = 0; k < cells_[i].normals.size(); ++k) {
       normal_estimates_[first_normal_[i] + k] = exact::unit_estimate(cells_[i].normals[k]);
     }
+    boxes[i] = box_of(cells_[i], normals_of(i));
   });
+  tree_.emplace(boxes);
+}
+
+std::span<const exact::UnitEstimate> OpenCells::normals_of(uint32_t i) const {
+  return {normal_estimates_.data() + first_normal_[i], cells_[i].normals.size()};
 }
 
 std::vector<uint32_t> OpenCells::near(const sphere::Box& query) {
@@ -98,9 +103,6 @@ std::vector<uint32_t> OpenCells::near(const sphere::Box& query) {
 bool OpenCells::hold(const ExactVec& u) {
   if (!tree_) index();
   const exact::UnitEstimate eu = exact::unit_estimate(u);
-  auto normals_of = [&](uint32_t i) {
-    return std::span<const exact::UnitEstimate>(normal_estimates_.data() + first_normal_[i], cells_[i].normals.size());
-  };
   std::vector<uint32_t> undecided;
   const bool held = tree_->visit_overlapping(sphere::point_box(eu), [&](uint32_t i) {
     const std::optional<bool> inside = estimated_inside(normals_of(i), eu);

@@ -40,6 +40,7 @@ class OpenCells {
 
  private:
   void index();
+  std::span<const exact::UnitEstimate> normals_of(uint32_t i) const;  // cell i's estimates
   std::vector<uint32_t> near(const sphere::Box& query);
 
   std::vector<Cell> cells_;
