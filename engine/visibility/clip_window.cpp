@@ -240,7 +240,9 @@ bool ClipWindow::misses(std::span<const ExactVec> polygon) const {
   for (const ExactVec& v : polygon) ev.push_back(exact::unit_estimate(v));
   for (size_t j = 0; j < normals_.size(); ++j) {
     bool any_positive = false;
-    for (size_t i = 0; i < polygon.size() && !any_positive; ++i) any_positive = side(j, polygon[i], ev[i]) == Sign::kPositive;
+    for (size_t i = 0; i < polygon.size() && !any_positive; ++i) {
+      any_positive = side(j, polygon[i], ev[i]) == Sign::kPositive;
+    }
     if (!any_positive) return true;
   }
   return false;

@@ -180,7 +180,9 @@ void DirectionWindow::values(const Point3& x, double* out) const {
 }
 
 void DirectionWindow::fold(double* row, const double* values, bool largest) const {
-  for (size_t k = 0; k < normals_.size(); ++k) row[k] = largest ? std::max(row[k], values[k]) : std::min(row[k], values[k]);
+  for (size_t k = 0; k < normals_.size(); ++k) {
+    row[k] = largest ? std::max(row[k], values[k]) : std::min(row[k], values[k]);
+  }
 }
 
 void DirectionWindow::row(const SolidMesh& mesh, std::initializer_list<uint32_t> vertices, bool largest,
