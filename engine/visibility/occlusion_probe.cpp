@@ -201,20 +201,73 @@ bool OcclusionProbe::enters_at_corner(uint32_t t, int corner, const ExactVec& u)
 OcclusionProbe::OcclusionProbe(const SolidMesh& mesh, std::span<const uint32_t> s,
                                std::span<const uint32_t> o)
     : mesh_(mesh), s_(s.begin(), s.end()), o_(o.begin(), o.end()),
-      coordinate_bound_(coordinate_bound(mesh, s, o)) {}
+      coordinate_bound_(coordinate_bound(mesh, s, o)) {
+  for (size_t begin = 0; begin < o_.size(); begin += kRun) {
+    Point3 lo = mesh.points[mesh.triangles[o_[begin]][0]], hi = lo;
+    for (size_t i = begin; i < std::min(o_.size(), begin + kRun); ++i) {
+      for (uint32_t v : mesh.triangles[o_[i]]) {
+        const Point3& p = mesh.points[v];
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+      }
+    }
+    std::array<Point3, 8> corners;
+    for (int k = 0; k < 8; ++k) corners[k] = {k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+    o_run_corners_.push_back(corners);
+  }
+}
+
+std::vector<uint32_t> OcclusionProbe::near_runs(const DirectionWindow& window, std::span<const double> s_min) const {
+  const size_t K = window.row_size(), sides = window.half_spaces();
+  std::vector<uint32_t> near;
+  if (K == 0) {
+    for (uint32_t i = 0; i < o_.size(); ++i) near.push_back(i);
+    return near;
+  }
+  // The runs of S: their smallest values.
+  std::vector<double> s_runs;
+  for (size_t i = 0; i < s_.size(); ++i) {
+    if (i % kRun == 0) {
+      s_runs.insert(s_runs.end(), s_min.begin() + i * K, s_min.begin() + (i + 1) * K);
+    } else {
+      window.fold(&s_runs[s_runs.size() - K], &s_min[i * K], false);
+    }
+  }
+  // A run of O's largest values are at most those at its box's corners, and the
+  // computed ones at most 1e-14 of the bound above those (rounding, three products), so
+  // a run ruled out holds no triangle whose own row the window would keep.
+  const double rounding = 1e-14 * coordinate_bound_;
+  std::vector<uint8_t> meets(o_run_corners_.size());
+  tbb::parallel_for(size_t{0}, o_run_corners_.size(), [&](size_t r) {
+    std::vector<double> run(K), corner(K);
+    window.row(mesh_, {mesh_.triangles[o_[r * kRun]][0]}, true, run.data());
+    for (const Point3& x : o_run_corners_[r]) {
+      window.values(x, corner.data());
+      window.fold(run.data(), corner.data(), true);
+    }
+    for (size_t k = 0; k < sides; ++k) run[k] += rounding;
+    for (size_t t = 0; t * K < s_runs.size() && !meets[r]; ++t) meets[r] = window.may_meet(run.data(), &s_runs[t * K]);
+  });
+  for (size_t r = 0; r < meets.size(); ++r) {
+    for (size_t i = r * kRun; meets[r] && i < std::min(o_.size(), (r + 1) * kRun); ++i) near.push_back(uint32_t(i));
+  }
+  return near;
+}
 
 template <class Visit>
 void OcclusionProbe::for_each_pair(const sphere::SphericalImage& cell, const Visit& visit) const {
   // Pairs whose segments certainly miss the cell are left out (certified double filter).
   const DirectionWindow window(cell, coordinate_bound_);
   const size_t K = window.row_size();
-  const WindowRows o_max(&window, o_.size(), window.extremes(mesh_, o_, true), WindowRows::Side::occluder);
   const std::vector<double> s_min = window.extremes(mesh_, s_, false);
+  std::vector<uint32_t> near;  // triangles of O
+  for (uint32_t i : near_runs(window, s_min)) near.push_back(o_[i]);
+  const WindowRows o_max(&window, near.size(), window.extremes(mesh_, near, true), WindowRows::Side::occluder);
   tbb::parallel_for(size_t{0}, s_.size(), [&](size_t si) {
     Interruptions interruptions(64);
-    o_max.for_each_meeting(s_min.data() + si * K, [&](size_t oi) {
+    o_max.for_each_meeting(s_min.data() + si * K, [&](size_t j) {
       interruptions.tick();
-      return visit(s_[si], o_[oi]);
+      return visit(s_[si], near[j]);
     });
   });
   interruption_point();  // pairs left unvisited when cancelled

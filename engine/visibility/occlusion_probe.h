@@ -26,6 +26,7 @@
 // the LVM in the plane of a triangle of S is not decided (unoccluded() below).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -34,6 +35,7 @@
 #include "gvm/mesh.h"
 #include "sphere/arc_intervals.h"
 #include "sphere/spherical_image.h"
+#include "visibility/direction_window.h"
 
 namespace gvm {
 
@@ -92,10 +94,17 @@ class OcclusionProbe {
   // direction in the cell; a pair's visit returning false ends its triangle of S early.
   template <class Visit>
   void for_each_pair(const sphere::SphericalImage& cell, const Visit& visit) const;
+  // The positions in o_ of the triangles of O in runs whose box may meet a run of S
+  // (s_min: the window's rows of S): a point's or an arc's window rules out most runs of
+  // O at once, so the others need no rows of their own.
+  std::vector<uint32_t> near_runs(const DirectionWindow& window, std::span<const double> s_min) const;
 
   const SolidMesh& mesh_;
   std::vector<uint32_t> s_, o_;
   double coordinate_bound_;
+  // The corners of a box around each run of kRun consecutive triangles of o_.
+  static constexpr size_t kRun = 32;
+  std::vector<std::array<Point3, 8>> o_run_corners_;
 };
 
 }  // namespace gvm
