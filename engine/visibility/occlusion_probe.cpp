@@ -233,7 +233,7 @@ std::vector<uint32_t> OcclusionProbe::near_runs(const DirectionWindow& window, s
       window.fold(&s_runs[s_runs.size() - K], &s_min[i * K], false);
     }
   }
-  // A run of O's largest values are at most those at its box's corners, and the
+  // The largest values over a run of O are at most those at its box's corners, the
   // computed ones at most 1e-14 of the bound above those (rounding, three products), so
   // a run ruled out holds no triangle whose own row the window would keep.
   const double rounding = 1e-14 * coordinate_bound_;
@@ -246,10 +246,14 @@ std::vector<uint32_t> OcclusionProbe::near_runs(const DirectionWindow& window, s
       window.fold(run.data(), corner.data(), true);
     }
     for (size_t k = 0; k < sides; ++k) run[k] += rounding;
-    for (size_t t = 0; t * K < s_runs.size() && !meets[r]; ++t) meets[r] = window.may_meet(run.data(), &s_runs[t * K]);
+    for (size_t t = 0; t * K < s_runs.size() && !meets[r]; ++t) {
+      meets[r] = window.may_meet(run.data(), &s_runs[t * K]);
+    }
   });
   for (size_t r = 0; r < meets.size(); ++r) {
-    for (size_t i = r * kRun; meets[r] && i < std::min(o_.size(), (r + 1) * kRun); ++i) near.push_back(uint32_t(i));
+    for (size_t i = r * kRun; meets[r] && i < std::min(o_.size(), (r + 1) * kRun); ++i) {
+      near.push_back(static_cast<uint32_t>(i));
+    }
   }
   return near;
 }
