@@ -45,6 +45,9 @@ bool some_side_separates(const double* q_max, const double* p_min, size_t begin,
 
 }  // namespace
 
+// m . x, the same double wherever a row is built.
+double DirectionWindow::value(const D3& m, const Point3& x) { return m[0] * x[0] + m[1] * x[1] + m[2] * x[2]; }
+
 DirectionWindow::InnerCap DirectionWindow::inscribed_cap(std::span<const D3> normals) {
   D3 sum{0, 0, 0};
   for (const D3& m : normals) sum = add(sum, m);
@@ -172,10 +175,7 @@ std::optional<DirectionWindow> DirectionWindow::covering(const sphere::Spherical
 void DirectionWindow::values(const Point3& x, double* out) const {
   if (normals_.empty()) return;
   const size_t K = normals_.size();
-  for (size_t k = 0; k < K; ++k) {
-    const D3& m = normals_[k];
-    out[k] = m[0] * x[0] + m[1] * x[1] + m[2] * x[2];
-  }
+  for (size_t k = 0; k < K; ++k) out[k] = value(normals_[k], x);
   out[K] = x[0], out[K + 1] = x[1], out[K + 2] = x[2];
 }
 
@@ -190,12 +190,10 @@ void DirectionWindow::row(const SolidMesh& mesh, std::initializer_list<uint32_t>
   if (normals_.empty()) return;
   const size_t K = normals_.size();
   for (size_t k = 0; k < K; ++k) {
-    const D3& m = normals_[k];
     bool first = true;
     for (uint32_t v : vertices) {
-      const Point3& x = mesh.points[v];
-      const double value = m[0] * x[0] + m[1] * x[1] + m[2] * x[2];
-      out[k] = first ? value : largest ? std::max(out[k], value) : std::min(out[k], value);
+      const double x = value(normals_[k], mesh.points[v]);
+      out[k] = first ? x : largest ? std::max(out[k], x) : std::min(out[k], x);
       first = false;
     }
   }

@@ -68,6 +68,7 @@ class DirectionWindow {
   // degrees) of the unit vector `centre`.
   void add_cap(const std::array<double, 3>& centre, double radius, const sphere::Face& within);
 
+  static double value(const std::array<double, 3>& m, const Point3& x);
   // Ends a cell: the half-spaces added since the last cell, and their inscribed cap.
   void end_cell();
 
@@ -104,6 +105,9 @@ class WindowRows {
 
   size_t size() const { return count_; }
   const double* row(size_t i) const { return &rows_[i * k_]; }
+  // The runs' extremes, run after run (none when every pair may meet).
+  size_t runs() const { return k_ == 0 ? 0 : runs_.size() / k_; }
+  const double* run(size_t r) const { return &runs_[r * k_]; }
 
   // Calls visit(i), in increasing order, for each row i whose pair with `other` (a row of
   // the other side) may meet the window, until visit returns false. Returns false if

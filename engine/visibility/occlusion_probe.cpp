@@ -198,6 +198,9 @@ bool OcclusionProbe::enters_at_corner(uint32_t t, int corner, const ExactVec& u)
   return sphere::point_in_face(cone, u);
 }
 
+// The probe's boxes of O group its triangles as the window's runs do.
+constexpr size_t kRun = WindowRows::kRun;
+
 OcclusionProbe::OcclusionProbe(const SolidMesh& mesh, std::span<const uint32_t> s,
                                std::span<const uint32_t> o)
     : mesh_(mesh), s_(s.begin(), s.end()), o_(o.begin(), o.end()),
@@ -224,15 +227,7 @@ std::vector<uint32_t> OcclusionProbe::near_runs(const DirectionWindow& window, s
     for (uint32_t i = 0; i < o_.size(); ++i) near.push_back(i);
     return near;
   }
-  // The runs of S: their smallest values.
-  std::vector<double> s_runs;
-  for (size_t i = 0; i < s_.size(); ++i) {
-    if (i % kRun == 0) {
-      s_runs.insert(s_runs.end(), s_min.begin() + i * K, s_min.begin() + (i + 1) * K);
-    } else {
-      window.fold(&s_runs[s_runs.size() - K], &s_min[i * K], false);
-    }
-  }
+  const WindowRows s_rows(&window, s_.size(), {s_min.begin(), s_min.end()}, WindowRows::Side::surface);
   // The largest values over a run of O are at most those at its box's corners, the
   // computed ones at most 1e-14 of the bound above those (rounding, three products), so
   // a run ruled out holds no triangle whose own row the window would keep.
@@ -246,9 +241,7 @@ std::vector<uint32_t> OcclusionProbe::near_runs(const DirectionWindow& window, s
       window.fold(run.data(), corner.data(), true);
     }
     for (size_t k = 0; k < sides; ++k) run[k] += rounding;
-    for (size_t t = 0; t * K < s_runs.size() && !meets[r]; ++t) {
-      meets[r] = window.may_meet(run.data(), &s_runs[t * K]);
-    }
+    for (size_t t = 0; t < s_rows.runs() && !meets[r]; ++t) meets[r] = window.may_meet(run.data(), s_rows.run(t));
   });
   for (size_t r = 0; r < meets.size(); ++r) {
     for (size_t i = r * kRun; meets[r] && i < std::min(o_.size(), (r + 1) * kRun); ++i) {

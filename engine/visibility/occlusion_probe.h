@@ -102,8 +102,7 @@ class OcclusionProbe {
   const SolidMesh& mesh_;
   std::vector<uint32_t> s_, o_;
   double coordinate_bound_;
-  // The corners of a box around each run of kRun consecutive triangles of o_.
-  static constexpr size_t kRun = 32;
+  // The corners of a box around each run of WindowRows::kRun consecutive triangles of o_.
   std::vector<std::array<Point3, 8>> o_run_corners_;
 };
 
