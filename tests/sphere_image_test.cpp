@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "io/sphere_proto.h"
 #include "exact/exact_vec.h"
@@ -107,6 +110,54 @@ TEST(SphereImage, ProtoOfAHemisphereIsACounterClockwiseSquare) {
   gvm::io::to_proto(SphericalImage::great_circle(V(1, 0, 0)), &g);
   ASSERT_EQ(g.arcs_size(), 1);
   EXPECT_EQ(g.arcs(0).vertices_size(), 5);  // closed: first vertex repeated
+}
+
+// A quadrilateral around (1, 1, 4) with a triangular hole, its loops starting at vertex
+// `start`, its circle normals `copies` times as long (the same circles built otherwise),
+// and two points, in either order.
+SphericalImage square_with_hole(size_t start, int copies, bool points_reversed) {
+  const std::vector<ExactVec> outer{V(0, 0, 1), V(3, 0, 4), V(3, 2, 4), V(0, 2, 3)};
+  const std::vector<ExactVec> hole{V(1, 1, 4), V(1.5, 1.8, 4), V(2, 1, 4)};  // clockwise: the set on its left
+  gvm::sphere::Face face;
+  for (const auto* ring : {&outer, &hole}) {
+    gvm::sphere::Loop& loop = face.loops.emplace_back();
+    for (size_t k = 0; k < ring->size(); ++k) {
+      const ExactVec& a = (*ring)[(start + k) % ring->size()];
+      const ExactVec& b = (*ring)[(start + k + 1) % ring->size()];
+      ExactVec longer = a;
+      for (int c = 1; c < copies; ++c) longer = longer + a;
+      loop.arcs.push_back({a, b, gvm::exact::cross(longer, b)});
+    }
+  }
+  SphericalImage image;
+  image.add_face(std::move(face));
+  std::vector<ExactVec> points{V(-1, 0, 0), V(0, -1, 0)};
+  if (points_reversed) std::swap(points[0], points[1]);
+  for (const ExactVec& p : points) image.add_point(p);
+  return image;
+}
+
+TEST(SphereImage, OneSetIsWrittenAsTheSameBytesHoweverItWasBuilt) {
+  gvm::v1::SphericalImage first;
+  gvm::io::to_proto(square_with_hole(0, 1, false), &first);
+  ASSERT_EQ(first.polygons_size(), 1);
+  ASSERT_EQ(first.polygons(0).loops_size(), 2);
+  ASSERT_EQ(first.points_size(), 2);
+  EXPECT_GT(first.area(), 0);
+  for (size_t start : {1, 2, 3}) {
+    for (int copies : {1, 3}) {
+      gvm::v1::SphericalImage other;
+      gvm::io::to_proto(square_with_hole(start, copies, start % 2 == 1), &other);
+      EXPECT_EQ(other.SerializeAsString(), first.SerializeAsString()) << start << " " << copies;
+    }
+  }
+  // Each loop starts at its smallest vertex.
+  for (const auto& loop : first.polygons(0).loops()) {
+    for (const auto& v : loop.vertices()) {
+      const auto& s = loop.vertices(0);
+      EXPECT_LE(std::make_tuple(s.x(), s.y(), s.z()), std::make_tuple(v.x(), v.y(), v.z()));
+    }
+  }
 }
 
 }  // namespace

@@ -122,21 +122,42 @@ double arc_angle(const Arc& arc) {
   return std::clamp(t, kPi, 2 * kPi);
 }
 
-double face_area(const Face& f) {
-  // Gauss-Bonnet: area = 2 pi chi - sum of turning angles, chi = 2 - number of loops.
-  double total = 2 * kPi * (2.0 - static_cast<double>(f.loops.size()));
+// Gauss-Bonnet: area = 2 pi chi - sum of turning angles, chi = 2 - number of loops. The
+// turning angles at the loops' vertices, from the unit vectors `unit` gives.
+template <class Unit>
+std::vector<double> turning_angles(const Face& f, const Unit& unit) {
+  std::vector<double> angles;
   for (const Loop& l : f.loops) {
     size_t n = l.arcs.size();
     if (n == 1 && l.arcs[0].full) continue;
     for (size_t i = 0; i < n; ++i) {
       const Arc& in = l.arcs[i];
       const Arc& out = l.arcs[(i + 1) % n];
-      D3 v = out.start.unit();
-      D3 t_in = cross(in.normal.unit(), v), t_out = cross(out.normal.unit(), v);
-      total -= std::atan2(dot(v, cross(t_in, t_out)), dot(t_in, t_out));
+      D3 v = unit(out.start);
+      D3 t_in = cross(unit(in.normal), v), t_out = cross(unit(out.normal), v);
+      angles.push_back(std::atan2(dot(v, cross(t_in, t_out)), dot(t_in, t_out)));
     }
   }
+  return angles;
+}
+
+double area_from(const Face& f, const std::vector<double>& angles) {
+  double total = 2 * kPi * (2.0 - static_cast<double>(f.loops.size()));
+  for (double a : angles) total -= a;
   return std::max(0.0, std::min(4 * kPi, total));
+}
+
+double face_area(const Face& f) {
+  return area_from(f, turning_angles(f, [](const ExactVec& x) { return x.unit(); }));
+}
+
+// The same doubles for the same face however it was built: the angles from the nearest
+// unit vectors (unit() depends on how a vector was constructed), summed in ascending
+// order (not in the order of the loops, which start anywhere).
+double canonical_face_area(const Face& f) {
+  std::vector<double> angles = turning_angles(f, [](const ExactVec& x) { return x.nearest_unit(); });
+  std::sort(angles.begin(), angles.end());
+  return area_from(f, angles);
 }
 
 std::string fmt_num(double x, const char* f) {
@@ -154,7 +175,7 @@ std::string fmt_coord(double x) {
 }
 
 std::string fmt_vec(const ExactVec& v) {
-  D3 u = v.unit();
+  D3 u = v.nearest_unit();  // the same text for one direction however it was built
   std::string s = "(";  // appended piecewise: GCC 12 warns falsely on "(" + std::string
   s += fmt_coord(u[0]);
   s += ", ";
@@ -171,14 +192,15 @@ std::string describe_face(const Face& f) {
   }
   if (f.convex && f.loops.size() == 1 && f.loops[0].arcs.size() == 2) {
     const Arc& a = f.loops[0].arcs[0];
-    return "lune of " + fmt_num(face_area(f) / 2 * 180 / kPi, "%.1f") + " deg between " +
-           fmt_vec(a.start) + " and " + fmt_vec(a.end);
+    const bool swap = a.end.nearest_unit() < a.start.nearest_unit();  // the corners in one order
+    return "lune of " + fmt_num(canonical_face_area(f) / 2 * 180 / kPi, "%.1f") + " deg between " +
+           fmt_vec(swap ? a.end : a.start) + " and " + fmt_vec(swap ? a.start : a.end);
   }
   size_t vertices = 0;
   for (const Loop& l : f.loops) vertices += l.arcs.size();
   std::string s = "polygon with " + std::to_string(vertices) + " vertices";
   if (f.loops.size() > 1) s += " and " + std::to_string(f.loops.size() - 1) + " holes";
-  return s + ", " + fmt_num(face_area(f), "%.2f") + " sr";
+  return s + ", " + fmt_num(canonical_face_area(f), "%.2f") + " sr";
 }
 
 std::string describe_curve(const Arc& a) {
@@ -315,6 +337,16 @@ double SphericalImage::area() const {
   return a;
 }
 
+double SphericalImage::canonical_area() const {
+  if (full_) return 4 * kPi;
+  std::vector<double> areas;
+  for (const Face& f : faces_) areas.push_back(canonical_face_area(f));
+  std::sort(areas.begin(), areas.end());
+  double a = 0;
+  for (double x : areas) a += x;
+  return a;
+}
+
 bool SphericalImage::within_closed_hemisphere(const ExactVec& n) const {
   if (exact::is_zero(n)) return true;
   if (full_) return false;
@@ -349,14 +381,22 @@ bool operator==(const SphericalImage& a, const SphericalImage& b) {
 
 std::string SphericalImage::description() const {
   if (full_) return "full sphere";
-  std::vector<std::string> parts;
-  for (const Face& f : faces_) parts.push_back(describe_face(f));
-  for (const Arc& a : curves_) parts.push_back(describe_curve(a));
-  if (points_.size() == 1) {
-    parts.push_back("point " + fmt_vec(points_[0]));
-  } else if (points_.size() == 2) {
-    parts.push_back("points " + fmt_vec(points_[0]) + " and " + fmt_vec(points_[1]));
-  } else if (!points_.empty()) {
+  // Each kind of cell in one order, whatever the order they were built in.
+  std::vector<std::string> faces, curves;
+  for (const Face& f : faces_) faces.push_back(describe_face(f));
+  for (const Arc& a : curves_) curves.push_back(describe_curve(a));
+  std::sort(faces.begin(), faces.end());
+  std::sort(curves.begin(), curves.end());
+  std::vector<std::string> parts = faces;
+  parts.insert(parts.end(), curves.begin(), curves.end());
+  std::vector<ExactVec> points = points_;
+  std::sort(points.begin(), points.end(),
+            [](const ExactVec& a, const ExactVec& b) { return a.nearest_unit() < b.nearest_unit(); });
+  if (points.size() == 1) {
+    parts.push_back("point " + fmt_vec(points[0]));
+  } else if (points.size() == 2) {
+    parts.push_back("points " + fmt_vec(points[0]) + " and " + fmt_vec(points[1]));
+  } else if (!points.empty()) {
     parts.push_back(std::to_string(points_.size()) + " points");
   }
   if (parts.empty()) return "empty";

@@ -80,6 +80,9 @@ class SphericalImage {
   // Area in steradians (Gauss-Bonnet over the loops, in doubles; 4 pi, 2 pi exactly for
   // the full sphere and a hemisphere; 0 without 2-cells).
   double area() const;
+  // The same area, the same doubles for the same set however its cells, loops and arcs
+  // were built and ordered (for output; exact evaluations at every vertex).
+  double canonical_area() const;
   // True iff u . n >= 0 for every u of the set (exact; vacuously true when empty).
   bool within_closed_hemisphere(const exact::ExactVec& n) const;
 
