@@ -25,6 +25,7 @@
 #include "visibility/occlusion_culling.h"
 #include "visibility/occlusion_probe.h"
 #include "visibility/open_cells.h"
+#include "visibility/probed_runs.h"
 #include "visibility/redundant_faces.h"
 #include "visibility/seam_candidates.h"
 
@@ -474,25 +475,40 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
   std::vector<sphere::Arc> grazing;  // visible parts of arcs of the LVM and of seams in Int(GOM)
   std::vector<uint8_t> edge_visible(arr.edges().size(), 0);
   int probed_arcs = 0, probed_points = 0, visible_points = 0;
+  // Whether the probe finds all of an arc visible; else its visible pieces are grazing.
+  auto decide = [&](const sphere::Arc& arc, std::vector<sphere::Arc> pieces) {
+    ++probed_arcs;
+    if (pieces.size() == 1 && exact::same_direction(pieces[0].start, arc.start) &&
+        exact::same_direction(pieces[0].end, arc.end)) {
+      return true;
+    }
+    grazing.insert(grazing.end(), pieces.begin(), pieces.end());
+    return false;
+  };
+  // Edges of the LVM inside Int(GOM), in runs along their circles (probed_runs.h); the
+  // vertices inside a run are decided with it (kVisible, kHidden: its pieces hold them).
+  enum RunVertex : uint8_t { kNotInRun, kVisible, kHidden };
+  std::vector<uint8_t> lvm_inside(arr.edges().size(), 0), run_vertex(arr.vertices().size(), kNotInRun);
+  for (uint32_t e = 0; e < arr.edges().size(); ++e) {
+    lvm_inside[e] = arr.edge_on_layer(e, kLvm) && occluded_face(half[2 * e].face) && occluded_face(half[2 * e + 1].face);
+  }
   Interruptions interruptions(64);
+  for (const ProbedRun& run : probed_runs(arr, lvm_inside)) {
+    interruptions.tick();
+    const bool whole = decide(run.arc, probe.unoccluded(run.arc));
+    for (uint32_t e : run.edges) edge_visible[e] = whole;
+    for (uint32_t v : run.inner) run_vertex[v] = whole ? kVisible : kHidden;
+  }
   for (uint32_t e = 0; e < arr.edges().size(); ++e) {
     interruptions.tick();
     const auto& edge = arr.edges()[e];
     const uint32_t left = half[2 * e].face, right = half[2 * e + 1].face;
-    const bool on_lvm_arc = arr.edge_on_layer(e, kLvm);
-    if (!on_lvm_arc && !in_lvm_face(left) && !in_lvm_face(right)) continue;
+    if (lvm_inside[e] || (!arr.edge_on_layer(e, kLvm) && !in_lvm_face(left) && !in_lvm_face(right))) continue;
     if (!occluded_face(left) || !occluded_face(right)) {
       edge_visible[e] = 1;
-    } else if (on_lvm_arc || arr.edge_on_layer(e, kSeam)) {
+    } else if (arr.edge_on_layer(e, kSeam)) {
       const sphere::Arc arc{arr.vertices()[edge.v0].p, arr.vertices()[edge.v1].p, edge.normal};
-      std::vector<sphere::Arc> pieces = on_lvm_arc ? probe.unoccluded(arc) : visible_on_seam(arc, open_cells, probe);
-      ++probed_arcs;
-      if (pieces.size() == 1 && exact::same_direction(pieces[0].start, arc.start) &&
-          exact::same_direction(pieces[0].end, arc.end)) {
-        edge_visible[e] = 1;
-      } else {
-        grazing.insert(grazing.end(), pieces.begin(), pieces.end());
-      }
+      edge_visible[e] = decide(arc, visible_on_seam(arc, open_cells, probe));
     }
   }
   auto vertex_in = [&](uint32_t v) {
@@ -509,6 +525,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
     if (!in_lvm) return false;
     if (!all_occluded) return true;
     if (!on_lvm && open_cells.hold(vert.p)) return false;
+    if (run_vertex[v] != kNotInRun) return run_vertex[v] == kVisible;
     ++probed_points;
     const bool visible = !probe.occluded(vert.p);
     visible_points += visible;
