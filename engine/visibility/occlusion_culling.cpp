@@ -12,78 +12,14 @@
 #include "exact/interrupt.h"
 #include "sphere/box_tree.h"
 #include "sphere/d3.h"
+#include "visibility/face_estimate.h"
+#include "visibility/tier_seeds.h"
 
 namespace gvm {
 namespace {
 
 using exact::ExactVec;
 using namespace sphere;  // D3, Box
-
-// Estimates of unit vertices are within kRadius of the exact directions (else the face is
-// kept), inward side normals within their `error` of the exact ones (a side between
-// vertices e apart turns by up to about 2 kRadius / e); dot products then err by far less
-// than kSlack.
-constexpr double kRadius = 1e-12;
-constexpr double kSlack = 1e-9;
-
-struct FaceEstimate {
-  std::vector<D3> u, inward;
-  std::vector<double> error;  // of each inward normal
-  Box box{};
-  double area = 0;
-  bool certain = false;
-};
-
-// The box around a convex face: around its sides, and reaching an axis' pole where the
-// pole may lie inside (there a coordinate peaks inside the face).
-Box face_box(const FaceEstimate& f, const std::vector<exact::UnitEstimate>& v) {
-  Box box = arc_box(v.back(), v[0]);
-  for (size_t i = 0; i + 1 < v.size(); ++i) {
-    const Box side = arc_box(v[i], v[i + 1]);
-    for (int k = 0; k < 3; ++k) {
-      box.lo[k] = std::min(box.lo[k], side.lo[k]);
-      box.hi[k] = std::max(box.hi[k], side.hi[k]);
-    }
-  }
-  for (int k = 0; k < 3; ++k) {
-    for (const double pole : {-1.0, 1.0}) {
-      bool may_hold = true;
-      for (size_t j = 0; j < f.inward.size(); ++j) may_hold = may_hold && pole * f.inward[j][k] > -(kSlack + f.error[j]);
-      if (may_hold) (pole < 0 ? box.lo[k] : box.hi[k]) = pole;
-    }
-  }
-  return box;
-}
-
-FaceEstimate estimate(const std::vector<ExactVec>& face) {
-  FaceEstimate f;
-  std::vector<exact::UnitEstimate> v;
-  for (const ExactVec& x : face) {
-    v.push_back(exact::unit_estimate(x));
-    if (!(v.back().radius <= kRadius)) return f;
-    f.u.push_back(v.back().unit);
-  }
-  for (size_t i = 0; i < f.u.size(); ++i) {
-    const D3 c = cross(f.u[i], f.u[(i + 1) % f.u.size()]);
-    const double length = norm(c);
-    f.inward.push_back(length > 0 ? normalized(c) : D3{});
-    f.error.push_back(length > 0 ? 8 * kRadius / length + 1e-15 : INFINITY);
-  }
-  for (size_t i = 1; i + 1 < f.u.size(); ++i) {
-    f.area += norm(cross(add(f.u[i], f.u[0], -1), add(f.u[i + 1], f.u[0], -1))) / 2;
-  }
-  f.box = face_box(f, v);
-  f.certain = true;
-  return f;
-}
-
-// Whether x certainly lies inside the face, away from its sides.
-bool strictly_inside(const FaceEstimate& f, const D3& x) {
-  for (size_t j = 0; j < f.inward.size(); ++j) {
-    if (!(dot(f.inward[j], x) > kSlack + f.error[j])) return false;
-  }
-  return true;
-}
 
 // A direction within kRadius of x: its estimate, else its exact value rounded.
 D3 direction(const ExactVec& x) {
@@ -382,6 +318,7 @@ sphere::SphericalImage boundary_of(const sphere::SphericalImage& set) {
   return out;
 }
 
+
 }  // namespace
 
 sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std::span<const uint32_t> kept,
@@ -391,18 +328,35 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
                               const TierPolicy& policy, const sphere::SphericalImage* needed) {
   // Faces by their positions in `kept`, largest first.
   std::vector<FaceEstimate> est(kept.size());
-  tbb::parallel_for(size_t{0}, kept.size(), [&](size_t k) { est[k] = estimate(faces[kept[k]]); });
+  tbb::parallel_for(size_t{0}, kept.size(), [&](size_t k) { est[k] = estimate_face(faces[kept[k]]); });
   interruption_point();
   std::vector<uint32_t> order(kept.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return est[a].area > est[b].area; });
+  // The first tier: the largest faces, and beside them, in a large union, the faces that
+  // cover what those leave of the occluded directions on `needed` (tier_seeds.h).
+  const size_t largest = std::max(policy.min_first_tier, order.size() / policy.first_tier_share);
+  size_t first_tier = largest;
+  if (needed && order.size() >= policy.seed_from && largest < order.size()) {
+    const std::span<const uint32_t> by_size(order);
+    std::vector<uint8_t> seed(kept.size(), 0);
+    for (uint32_t k : tier_seeds(est, by_size.first(largest), by_size.subspan(largest), *needed,
+                                 policy.seed_samples_per_face * order.size())) {
+      seed[k] = 1;
+    }
+    first_tier = std::stable_partition(order.begin() + largest, order.end(), [&](uint32_t k) { return seed[k] != 0; }) -
+                 order.begin();
+    spdlog::debug("union by tiers: {} faces join the {} largest in the first tier", first_tier - largest, largest);
+  }
   TieredUnionStatistics local;
   local.faces = order.size();
   std::vector<uint32_t> in_union;  // positions
   std::optional<UnionSoFar> so_far;
   const sphere::SphericalImage rim = needed ? boundary_of(*needed) : sphere::SphericalImage{};
-  size_t tier = std::max(policy.min_first_tier, order.size() / policy.first_tier_share);
-  for (size_t next = 0;; next += tier, tier *= 2) {
+  // Each later tier twice the one before (after a seeded first tier, from the size of the
+  // largest faces').
+  auto next_tier = [&](size_t next, size_t tier) { return next == first_tier && first_tier > largest ? largest : 2 * tier; };
+  for (size_t next = 0, tier = first_tier;; next += tier, tier = next_tier(next, tier)) {
     std::span<const uint32_t> candidates(order.data() + next, std::min(tier, order.size() - next));
     std::vector<uint8_t> inside(candidates.size(), 0);
     if (so_far) {
