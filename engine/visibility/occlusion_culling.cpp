@@ -4,7 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -13,6 +12,7 @@
 #include "sphere/box_tree.h"
 #include "sphere/d3.h"
 #include "visibility/face_estimate.h"
+#include "visibility/face_tree.h"
 #include "visibility/tier_seeds.h"
 
 namespace gvm {
@@ -152,48 +152,18 @@ bool interior_separated(const FaceEstimate& f, std::span<const ExactVec> v, cons
   return false;
 }
 
-// The inward sides of a face with up to four, side by side in one block: in_interior tests
-// a direction against a few hundred faces of the union whose boxes hold it (on the pocket
-// floor), and the estimates' own vectors, scattered over the heap, cost a cache miss each.
-struct CompactSides {
-  static constexpr size_t kMax = 4;
-  std::array<D3, kMax> inward;
-  std::array<double, kMax> limit;  // kSlack + error
-  uint32_t count = 0;              // 0: more than kMax sides (use the estimate)
-
-  explicit CompactSides(const FaceEstimate& f) {
-    if (f.inward.size() > kMax) return;
-    count = static_cast<uint32_t>(f.inward.size());
-    for (size_t j = 0; j < count; ++j) inward[j] = f.inward[j], limit[j] = kSlack + f.error[j];
-  }
-  // strictly_inside(f, x) for the face f it was built from (count > 0).
-  bool strictly_inside(const D3& x) const {
-    for (size_t j = 0; j < count; ++j) {
-      if (!(dot(inward[j], x) > limit[j])) return false;
-    }
-    return true;
-  }
-};
-
 // The union of the tiers so far, and what the test of a face against it needs.
 class UnionSoFar {
  public:
   UnionSoFar(sphere::Region region, std::span<const FaceEstimate> est, std::span<const uint32_t> in_union,
              std::span<const ClipWindow> windows)
-      : region_(std::move(region)), est_(est), windows_(windows) {
+      : region_(std::move(region)), windows_(windows) {
     for (const ArrangementArc& a : region_.boundary) {
       add_pieces(a, static_cast<uint32_t>(exact_arcs_.size()), arcs_);
       exact_arcs_.push_back({a.from, a.to, a.normal});
     }
     arc_tree_.emplace(boxes_of(arcs_));
-    std::vector<Box> face_boxes;
-    for (uint32_t i : in_union) {
-      if (!est_[i].certain) continue;
-      members_.push_back(i);
-      member_sides_.emplace_back(est_[i]);
-      face_boxes.push_back(est_[i].box);
-    }
-    face_tree_.emplace(face_boxes);
+    face_tree_.emplace(est, in_union);
   }
 
   const sphere::Region& region() const { return region_; }
@@ -281,22 +251,15 @@ class UnionSoFar {
         return false;
       }
     }
-    const Box point{{c[0] - kSlack, c[1] - kSlack, c[2] - kSlack}, {c[0] + kSlack, c[1] + kSlack, c[2] + kSlack}};
-    return face_tree_->visit_overlapping(point, [&](uint32_t g) {
-      const CompactSides& sides = member_sides_[g];
-      return sides.count > 0 ? sides.strictly_inside(c) : strictly_inside(est_[members_[g]], c);
-    });
+    return face_tree_->holds(c);
   }
 
   sphere::Region region_;
-  std::span<const FaceEstimate> est_;
   std::span<const ClipWindow> windows_;
   std::vector<ArcEstimate> arcs_;
   std::vector<ExactPiece> exact_arcs_;
   std::optional<BoxTree> arc_tree_;
-  std::vector<uint32_t> members_;  // positions of the faces in the union
-  std::vector<CompactSides> member_sides_;  // of each member
-  std::optional<BoxTree> face_tree_;
+  std::optional<FaceTree> face_tree_;  // of the faces in the union
   std::vector<D3> needed_sides_;  // inward normals of `needed`, when that is one convex face
   std::vector<ArcEstimate> left_arcs_;
   std::vector<ExactPiece> left_exact_;

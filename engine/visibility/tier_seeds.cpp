@@ -4,16 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <utility>
 
-#include "sphere/box_tree.h"
+#include "visibility/face_tree.h"
 
 namespace gvm {
 namespace {
 
-using sphere::Box;
-using sphere::BoxTree;
 using sphere::D3;
 
 // The directions of a Fibonacci lattice with about `count` points per `area` steradians
@@ -71,21 +68,6 @@ std::vector<D3> convex_sides(const sphere::SphericalImage& needed) {
   return sides;
 }
 
-// A box tree over the certain faces of `subset`, and the face of each box.
-struct FaceTree {
-  FaceTree(std::span<const FaceEstimate> faces, std::span<const uint32_t> subset) {
-    std::vector<Box> boxes;
-    for (uint32_t i : subset) {
-      if (!faces[i].certain) continue;
-      boxes.push_back(faces[i].box);
-      face.push_back(i);
-    }
-    tree.emplace(boxes);
-  }
-  std::vector<uint32_t> face;
-  std::optional<BoxTree> tree;
-};
-
 }  // namespace
 
 std::vector<uint32_t> tier_seeds(std::span<const FaceEstimate> faces, std::span<const uint32_t> largest,
@@ -93,7 +75,7 @@ std::vector<uint32_t> tier_seeds(std::span<const FaceEstimate> faces, std::span<
                                  size_t samples) {
   const FaceTree first(faces, largest), others(faces, rest);
   const double area = needed.is_full_sphere() ? 4 * M_PI : needed.area();
-  if (others.face.empty() || !(area > 0)) return {};
+  if (others.empty() || !(area > 0)) return {};
   const auto [pole, min_cos] = cap_around(needed);
   // A direction outside `needed` (certainly, when it is convex) asks for no face.
   const std::vector<D3> sides = convex_sides(needed);
@@ -102,17 +84,8 @@ std::vector<uint32_t> tier_seeds(std::span<const FaceEstimate> faces, std::span<
   };
   std::vector<uint32_t> seeds;
   for (const D3& x : lattice_in_cap(pole, min_cos, area, samples)) {
-    if (outside(x)) continue;
-    const Box point{{x[0] - kSlack, x[1] - kSlack, x[2] - kSlack}, {x[0] + kSlack, x[1] + kSlack, x[2] + kSlack}};
-    if (first.tree->visit_overlapping(point, [&](uint32_t k) { return strictly_inside(faces[first.face[k]], x); })) {
-      continue;
-    }
-    int64_t best = -1;
-    others.tree->visit_overlapping(point, [&](uint32_t k) {
-      const uint32_t f = others.face[k];
-      if ((best < 0 || faces[f].area > faces[best].area) && strictly_inside(faces[f], x)) best = f;
-      return false;
-    });
+    if (outside(x) || first.holds(x)) continue;
+    const int64_t best = others.largest_holding(x);
     if (best >= 0 && (!sides.empty() || needed.contains(exact::ExactVec::from_point({x[0], x[1], x[2]})))) {
       seeds.push_back(static_cast<uint32_t>(best));
     }
