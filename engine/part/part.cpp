@@ -2,11 +2,13 @@
 
 #include <google/protobuf/struct.pb.h>
 #include <google/protobuf/util/json_util.h>
+#include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <set>
@@ -67,6 +69,21 @@ struct IdSet {
   }
   bool contains(uint32_t t) const { return std::binary_search(ids.begin(), ids.end(), t); }
 };
+
+// body(i, found) for every i < n, in parallel; all it found, sorted, without repeats.
+template <class Body>
+std::vector<uint32_t> sorted_union(size_t n, const Body& body) {
+  tbb::combinable<std::vector<uint32_t>> parts;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
+    std::vector<uint32_t>& found = parts.local();
+    for (size_t i = r.begin(); i != r.end(); ++i) body(i, found);
+  });
+  std::vector<uint32_t> all;
+  parts.combine_each([&](const std::vector<uint32_t>& p) { all.insert(all.end(), p.begin(), p.end()); });
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
 
 }  // namespace
 
@@ -267,42 +284,42 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
 std::vector<uint32_t> Part::neighbor_occluders(std::span<const uint32_t> s) const {
   const Impl& I = *impl_;
   const SolidMesh& m = I.mesh;
-  IdSet in_s(s, m.triangles.size());
-  std::vector<uint32_t> out;
-  std::vector<uint32_t> verts;
-  for (uint32_t t : in_s.ids) {
+  const IdSet in_s(s, m.triangles.size());
+  // Across the concave edges of S: the far vertex of the neighbour strictly in front of t.
+  std::vector<uint32_t> out = sorted_union(in_s.ids.size(), [&](size_t k, std::vector<uint32_t>& found) {
+    const uint32_t t = in_s.ids[k];
     const Triangle& tr = m.triangles[t];
     for (int i = 0; i < 3; ++i) {
-      verts.push_back(tr[i]);
-      uint32_t u = m.neighbor[t][i];
+      const uint32_t u = m.neighbor[t][i];
       if (in_s.contains(u)) continue;
       const Triangle& ur = m.triangles[u];
       uint32_t opp = ur[0];
       for (uint32_t v : ur)
         if (v != tr[i] && v != tr[(i + 1) % 3]) opp = v;
-      // Concave edge: the far vertex of u is strictly in front of t.
-      if (exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[opp]) == Sign::kPositive)
-        out.push_back(u);
+      if (exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[opp]) == Sign::kPositive) found.push_back(u);
     }
-  }
+  });
+  std::vector<uint32_t> verts;
+  for (uint32_t t : in_s.ids) verts.insert(verts.end(), m.triangles[t].begin(), m.triangles[t].end());
   std::sort(verts.begin(), verts.end());
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  for (uint32_t v : verts) {
+  // At the vertices of S: a face F whose closed front side holds every edge at the vertex.
+  const std::vector<uint32_t> at_vertices = sorted_union(verts.size(), [&](size_t k, std::vector<uint32_t>& found) {
+    const uint32_t v = verts[k];
     const Point3& pv = m.points[v];
-    for (uint32_t k = I.vt_offset[v]; k < I.vt_offset[v + 1]; ++k) {
-      uint32_t f = I.vt[k];
+    for (uint32_t j = I.vt_offset[v]; j < I.vt_offset[v + 1]; ++j) {
+      const uint32_t f = I.vt[j];
       if (in_s.contains(f)) continue;
       bool covers = true;
-      for (uint32_t j = I.vv_offset[v]; j < I.vv_offset[v + 1] && covers; ++j)
+      for (uint32_t e = I.vv_offset[v]; e < I.vv_offset[v + 1] && covers; ++e)
         // (w - v) . n_F >= 0: every edge at v on the closed front side of F.
-        covers = exact::det_diff(I.P(f, 0), I.P(f, 1), I.P(f, 0), I.P(f, 2), pv,
-                                 m.points[I.vv[j]]) != Sign::kNegative;
-      if (covers) out.push_back(f);
+        covers = exact::det_diff(I.P(f, 0), I.P(f, 1), I.P(f, 0), I.P(f, 2), pv, m.points[I.vv[e]]) != Sign::kNegative;
+      if (covers) found.push_back(f);
     }
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  });
+  std::vector<uint32_t> merged;
+  std::set_union(out.begin(), out.end(), at_vertices.begin(), at_vertices.end(), std::back_inserter(merged));
+  return merged;
 }
 
 std::vector<uint32_t> Part::potential_occluders(

@@ -1,5 +1,7 @@
 #include "visibility/surface_visibility.h"
 
+#include <tbb/parallel_for.h>
+
 #include <array>
 #include <vector>
 
@@ -85,10 +87,12 @@ SurfaceVisibility compute_surface_visibility(const Part& part, std::span<const u
   SurfaceVisibility out;
   out.occluders.neighbor = part.neighbor_occluders(s);
 
-  std::vector<exact::ExactVec> normals;
-  normals.reserve(s.size() + out.occluders.neighbor.size());
-  for (uint32_t t : s) normals.push_back(normal_of(mesh, t));
-  for (uint32_t t : out.occluders.neighbor) normals.push_back(normal_of(mesh, t));
+  // In parallel: occt_brep_Bottom's largest region has 188,937 triangles of 185,404
+  // distinct normals, whose 1.1 M expression nodes took 0.4 s to build on one thread.
+  std::vector<exact::ExactVec> normals(s.size() + out.occluders.neighbor.size());
+  tbb::parallel_for(size_t{0}, normals.size(), [&](size_t i) {
+    normals[i] = normal_of(mesh, i < s.size() ? s[i] : out.occluders.neighbor[i - s.size()]);
+  });
   out.lvm = sphere::local_visibility_map(normals);
 
   if (touches_void(mesh, s)) {
