@@ -279,6 +279,55 @@ TEST(ExactVec, CrossProductDirectionsAreExact) {
   EXPECT_NEAR(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], 1.0, 1e-15);
 }
 
+// triangle_normal and point_difference are single nodes with their own exact stage: their
+// signs against each other and as factors of cross products, on coplanar and nearly
+// coplanar points, equal the rational reference and the same expressions built as trees
+// of points (from_point, -, cross).
+TEST(ExactVec, OneNodeNormalsAndDifferencesMatchTheirTrees) {
+  std::mt19937_64 rng(20261206);
+  std::uniform_int_distribution<int> small(-9, 9), wide(-30, 30), narrow(-2, 3), ulps(-2, 2);
+  bool exactly = false;  // even iterations: coordinates whose combinations below are exact
+  auto point = [&] {
+    auto& expo = exactly ? narrow : wide;
+    return Point3{std::ldexp(small(rng), expo(rng)), std::ldexp(small(rng), expo(rng)), std::ldexp(small(rng), expo(rng))};
+  };
+  auto nudge = [&](double x) {
+    for (int k = exactly ? 0 : ulps(rng); k != 0; k += k > 0 ? -1 : 1) x = std::nextafter(x, k > 0 ? 1e308 : -1e308);
+    return x;
+  };
+  auto tree_normal = [](const Point3& a, const Point3& b, const Point3& c) {
+    const ExactVec pa = ExactVec::from_point(a);
+    return cross(ExactVec::from_point(b) - pa, ExactVec::from_point(c) - pa);
+  };
+  int zeros = 0;
+  for (int iter = 0; iter < 20000; ++iter) {
+    SCOPED_TRACE("iteration " + std::to_string(iter));
+    exactly = iter % 2 == 0;
+    const Point3 a = point(), b = point(), c = point();
+    // d on the plane of a, b, c (odd iterations: in doubles, then a few ulps off), and a
+    // point on the line a b.
+    const double s = small(rng) * 0.25, t = small(rng) * 0.5;
+    const Point3 d{nudge(a.x + s * (b.x - a.x) + t * (c.x - a.x)), nudge(a.y + s * (b.y - a.y) + t * (c.y - a.y)),
+                   nudge(a.z + s * (b.z - a.z) + t * (c.z - a.z))};
+    const Point3 on_line{a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)};
+    const ExactVec n = triangle_normal(a, b, c), ad = point_difference(d, a);
+    const Sign want = reference_orient3d(a, b, c, d);
+    ASSERT_EQ(sign_dot(n, ad), want);
+    ASSERT_EQ(sign_dot(tree_normal(a, b, c), ExactVec::from_point(d) - ExactVec::from_point(a)), want);
+    ASSERT_EQ(sign_det(point_difference(b, a), point_difference(c, a), ad), want);
+    ASSERT_EQ(is_zero(triangle_normal(a, b, on_line)), is_zero(tree_normal(a, b, on_line)));
+    ASSERT_TRUE(parallel(n, tree_normal(a, b, c)));
+    ASSERT_EQ(sign_dot(cross(n, ad), n), Sign::kZero);  // a factor of a cross product, by construction
+    for (int i = 0; i < 3; ++i) {
+      const mpq_class coordinate = (q(b[(i + 1) % 3]) - q(a[(i + 1) % 3])) * (q(c[(i + 2) % 3]) - q(a[(i + 2) % 3])) -
+                                   (q(b[(i + 2) % 3]) - q(a[(i + 2) % 3])) * (q(c[(i + 1) % 3]) - q(a[(i + 1) % 3]));
+      ASSERT_EQ(sign_of_coordinate(n, i), sign_of(coordinate)) << "coordinate " << i;
+    }
+    zeros += want == Sign::kZero;
+  }
+  EXPECT_GT(zeros, 5000);
+}
+
 // Coordinates of directions built as meetings of circles through them, with exact zero
 // coordinates the doubles round away (p = (0, 1, 3) and the like): each sign equals the
 // dot with the axis.

@@ -27,6 +27,8 @@ class ExactVec {
   friend ExactVec operator-(const ExactVec& a, const ExactVec& b);
   friend ExactVec operator-(const ExactVec& a);
   friend ExactVec cross(const ExactVec& a, const ExactVec& b);
+  friend ExactVec point_difference(const Point3& q, const Point3& p);
+  friend ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c);
 
   // Floating-point approximation (value only), e.g. for output and bounding boxes.
   std::array<double, 3> approx() const;
@@ -52,7 +54,9 @@ class ExactVec {
 
 ExactVec cross(const ExactVec& a, const ExactVec& b);
 
-// Convenience: the normal (b - a) x (c - a) of triangle a, b, c.
+// from_point(q) - from_point(p), and the normal (b - a) x (c - a) of triangle a, b, c, each
+// as one node (for the many built from mesh points).
+ExactVec point_difference(const Point3& q, const Point3& p);
 ExactVec triangle_normal(const Point3& a, const Point3& b, const Point3& c);
 
 // Exact predicates on exact vectors.

@@ -79,7 +79,7 @@ ArcSpans::Span ArcSpans::of_pair(const SolidMesh& mesh, uint32_t fs, uint32_t ft
       } else if (x.along_normal < -x.error) {
         x.side = Sign::kNegative;
       } else {
-        x.side = exact::sign_dot(ExactVec::from_point(P[q]) - ExactVec::from_point(P[p]), arc_.normal);
+        x.side = exact::sign_dot(exact::point_difference(P[q], P[p]), arc_.normal);
       }
       above |= x.side == Sign::kPositive;
       below |= x.side == Sign::kNegative;

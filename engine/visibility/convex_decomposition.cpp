@@ -85,7 +85,7 @@ std::vector<SphericalImage> pairwise_occlusion_maps(const SolidMesh& mesh,
     const uint64_t key = uint64_t(q) << 32 | p;
     auto it = differences.find(key);
     if (it != differences.end()) return it->second;
-    const ExactVec d = ExactVec::from_point(mesh.points[q]) - ExactVec::from_point(mesh.points[p]);
+    const ExactVec d = exact::point_difference(mesh.points[q], mesh.points[p]);
     return differences.emplace(key, d).first->second;
   };
   std::vector<Chunk> chunks(s.size());

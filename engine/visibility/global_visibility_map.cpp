@@ -48,7 +48,7 @@ class SumVertices {
   explicit SumVertices(const SolidMesh& mesh) : mesh_(mesh) {}
   const ExactVec& at(uint32_t q, uint32_t p) {
     auto [it, inserted] = cache_.try_emplace(uint64_t(q) << 32 | p);
-    if (inserted) it->second = ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]);
+    if (inserted) it->second = exact::point_difference(mesh_.points[q], mesh_.points[p]);
     return it->second;
   }
   const ExactVec& at(uint32_t q, uint32_t p) const { return cache_.at(uint64_t(q) << 32 | p); }

@@ -347,7 +347,7 @@ OcclusionProbe::PrismCover OcclusionProbe::prism_cover(const sphere::Arc& open_a
       std::vector<ExactVec> d;
       for (uint32_t q : t) {
         for (uint32_t p : s) {
-          if (q != p) d.push_back(ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]));
+          if (q != p) d.push_back(exact::point_difference(mesh_.points[q], mesh_.points[p]));
         }
       }
       const sphere::SphericalImage map = pairwise_occlusion_map(d);

@@ -143,7 +143,7 @@ class ContactDirections {
   ExactVec operator()(uint32_t p, uint32_t q) const {
     const uint64_t key = uint64_t(p) << 32 | q;
     if (const auto it = cache_.find(key); it != cache_.end()) return it->second;
-    return cache_.emplace(key, ExactVec::from_point(mesh_.points[q]) - ExactVec::from_point(mesh_.points[p]))
+    return cache_.emplace(key, exact::point_difference(mesh_.points[q], mesh_.points[p]))
         .first->second;
   }
 
