@@ -44,10 +44,11 @@ bool FaceTree::holds(const sphere::D3& x) const {
   return tree_->visit_overlapping(point_box(x), [&](uint32_t k) { return face_holds(k, x); });
 }
 
-int64_t FaceTree::largest_holding(const sphere::D3& x) const {
+int64_t FaceTree::largest_holding(const sphere::D3& x, size_t& tested) const {
   int64_t best = -1;
   double area = -1;
   tree_->visit_overlapping(point_box(x), [&](uint32_t k) {
+    ++tested;
     if (sides_[k].area > area && face_holds(k, x)) best = index_[k], area = sides_[k].area;
     return false;
   });

@@ -27,8 +27,8 @@ class FaceTree {
   // Whether some face of the subset strictly holds x (strictly_inside).
   bool holds(const sphere::D3& x) const;
   // The largest face of the subset (by FaceEstimate::area; an index into `faces`) that
-  // strictly holds x, or -1.
-  int64_t largest_holding(const sphere::D3& x) const;
+  // strictly holds x, or -1; adds the number of faces whose boxes it tested to `tested`.
+  int64_t largest_holding(const sphere::D3& x, size_t& tested) const;
 
  private:
   struct Sides {

@@ -300,7 +300,7 @@ sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std:
   // cover what those leave of the occluded directions on `needed` (tier_seeds.h).
   const size_t largest = std::max(policy.min_first_tier, order.size() / policy.first_tier_share);
   size_t first_tier = largest;
-  if (needed && order.size() >= policy.seed_from && largest < order.size()) {
+  if (needed && order.size() >= policy.seed_from && order.size() <= policy.seed_until && largest < order.size()) {
     const std::span<const uint32_t> by_size(order);
     std::vector<uint8_t> seed(kept.size(), 0);
     for (uint32_t k : tier_seeds(est, by_size.first(largest), by_size.subspan(largest), *needed,

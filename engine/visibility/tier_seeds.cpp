@@ -82,10 +82,20 @@ std::vector<uint32_t> tier_seeds(std::span<const FaceEstimate> faces, std::span<
   auto outside = [&](const D3& x) {
     return std::any_of(sides.begin(), sides.end(), [&](const D3& n) { return sphere::dot(n, x) < -kSlack; });
   };
+  // Box tests allowed per face of `rest`: the Prusa parts' surfaces take 60-120.
+  constexpr size_t kTestsPerFace = 512;
+  size_t tested = 0;
   std::vector<uint32_t> seeds;
   for (const D3& x : lattice_in_cap(pole, min_cos, area, samples)) {
     if (outside(x) || first.holds(x)) continue;
-    const int64_t best = others.largest_holding(x);
+    if (tested > kTestsPerFace * rest.size()) {
+      // Sliver faces over a wide LVM (the pocket floor of gvm_make_pocket_part: thousands
+      // of boxes around each direction, 25 s instead of 5 without this budget): the seeds
+      // found so far order the faces; the tiers do the rest.
+      spdlog::debug("tier seeds: budget of {} box tests spent, {} seeds", tested, seeds.size());
+      break;
+    }
+    const int64_t best = others.largest_holding(x, tested);
     if (best >= 0 && (!sides.empty() || needed.contains(exact::ExactVec::from_point({x[0], x[1], x[2]})))) {
       seeds.push_back(static_cast<uint32_t>(best));
     }
