@@ -40,7 +40,6 @@ void write(const Vertex& u, v1::Vec3* out) {
   out->set_z(u[2]);
 }
 
-
 }  // namespace
 
 void to_proto(const exact::ExactVec& direction, v1::Vec3* out) { write(direction.nearest_unit(), out); }

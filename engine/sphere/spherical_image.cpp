@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "sphere/d3.h"
 #include "sphere/point_in_face.h"
@@ -389,14 +390,19 @@ std::string SphericalImage::description() const {
   std::sort(curves.begin(), curves.end());
   std::vector<std::string> parts = faces;
   parts.insert(parts.end(), curves.begin(), curves.end());
-  std::vector<ExactVec> points = points_;
-  std::sort(points.begin(), points.end(),
-            [](const ExactVec& a, const ExactVec& b) { return a.nearest_unit() < b.nearest_unit(); });
-  if (points.size() == 1) {
-    parts.push_back("point " + fmt_vec(points[0]));
-  } else if (points.size() == 2) {
-    parts.push_back("points " + fmt_vec(points[0]) + " and " + fmt_vec(points[1]));
-  } else if (!points.empty()) {
+  // One or two points named, sorted by their nearest unit vectors (each computed once: a
+  // few exact evaluations); more only counted.
+  std::vector<std::pair<D3, size_t>> named;
+  if (points_.size() <= 2) {
+    for (size_t i = 0; i < points_.size(); ++i) named.emplace_back(points_[i].nearest_unit(), i);
+    std::sort(named.begin(), named.end());
+  }
+  auto point = [&](size_t k) { return fmt_vec(points_[named[k].second]); };
+  if (points_.size() == 1) {
+    parts.push_back("point " + point(0));
+  } else if (points_.size() == 2) {
+    parts.push_back("points " + point(0) + " and " + point(1));
+  } else if (!points_.empty()) {
     parts.push_back(std::to_string(points_.size()) + " points");
   }
   if (parts.empty()) return "empty";

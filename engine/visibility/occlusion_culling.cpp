@@ -281,7 +281,6 @@ sphere::SphericalImage boundary_of(const sphere::SphericalImage& set) {
   return out;
 }
 
-
 }  // namespace
 
 sphere::Region union_by_tiers(std::span<const std::vector<ExactVec>> faces, std::span<const uint32_t> kept,

@@ -89,9 +89,9 @@ std::vector<uint32_t> tier_seeds(std::span<const FaceEstimate> faces, std::span<
   for (const D3& x : lattice_in_cap(pole, min_cos, area, samples)) {
     if (outside(x) || first.holds(x)) continue;
     if (tested > kTestsPerFace * rest.size()) {
-      // Sliver faces over a wide LVM (the pocket floor of gvm_make_pocket_part: thousands
-      // of boxes around each direction, 25 s instead of 5 without this budget): the seeds
-      // found so far order the faces; the tiers do the rest.
+      // A guard against sliver faces over a wide LVM, thousands of boxes around each
+      // direction (the pocket floor of gvm_make_pocket_part, which TierPolicy::seed_until
+      // keeps out): the seeds found so far order the faces; the tiers do the rest.
       spdlog::debug("tier seeds: budget of {} box tests spent, {} seeds", tested, seeds.size());
       break;
     }
