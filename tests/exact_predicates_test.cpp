@@ -373,5 +373,32 @@ TEST(ExactVec, SignOfADotFromEstimatesIsTheExactOne) {
   EXPECT_GT(zeros, 1000);
 }
 
+// A sum of signed volumes long enough to be summed in parallel, where the doubles cannot
+// decide: every triangle's volume cancels against its reversed copy in the other half, and
+// one tiny triangle decides the sign (or, without it, the sum is exactly zero).
+TEST(ExactPredicates, SignedVolumeOfManyCancellingTrianglesIsExact) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> big(-1e6, 1e6);
+  std::vector<Point3> points;
+  std::vector<Triangle> triangles;
+  const uint32_t pairs = 20000;
+  for (uint32_t i = 0; i < 3 * pairs; ++i) points.push_back({big(rng), big(rng), big(rng)});
+  for (uint32_t i = 0; i < pairs; ++i) triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  for (uint32_t i = 0; i < pairs; ++i) triangles.push_back({3 * i, 3 * i + 2, 3 * i + 1});
+  std::vector<uint32_t> all(triangles.size());
+  for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  EXPECT_EQ(signed_volume_sign(points, triangles, all), Sign::kZero);
+
+  const uint32_t tiny = static_cast<uint32_t>(points.size());
+  points.push_back({1e-9, 0, 0});
+  points.push_back({0, 1e-9, 0});
+  points.push_back({0, 0, 1e-9});
+  triangles.insert(triangles.begin() + pairs, {tiny, tiny + 1, tiny + 2});
+  all.push_back(static_cast<uint32_t>(all.size()));
+  EXPECT_EQ(signed_volume_sign(points, triangles, all), Sign::kPositive);
+  std::swap(triangles[pairs][1], triangles[pairs][2]);
+  EXPECT_EQ(signed_volume_sign(points, triangles, all), Sign::kNegative);
+}
+
 }  // namespace
 }  // namespace gvm::exact

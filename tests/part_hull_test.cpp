@@ -1,7 +1,9 @@
 // The exact convex hull and the hill-climbing extreme-vertex query behind hull facets.
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cstdio>
+#include <random>
 #include <set>
 
 #include "exact/predicates.h"
@@ -70,6 +72,27 @@ TEST(PartConvexHull, ExtremeVertexFromEveryStart) {
     }
   }
   std::printf("hull vertices inside a face: %d\n", interior_starts);
+}
+
+// Enough points for the conflict lists to be assigned in parallel (a box's grid and random
+// points inside it): the hull holds every point, and it is the same facets on one thread
+// and on two.
+TEST(PartConvexHull, LargeSetIsTheSameOnOneAndTwoThreads) {
+  auto pts = grid_box(12);
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coordinate(1, 1 << 20);
+  while (pts.size() < 9000)
+    pts.push_back({12.0 * coordinate(rng) / (1 << 20), 12.0 * coordinate(rng) / (1 << 20), 12.0 * coordinate(rng) / (1 << 20)});
+  std::vector<uint32_t> use(pts.size());
+  for (uint32_t i = 0; i < use.size(); ++i) use[i] = i;
+  ConvexHull one, two;
+  tbb::task_arena(1).execute([&] { one = convex_hull(pts, use); });
+  tbb::task_arena(2).execute([&] { two = convex_hull(pts, use); });
+  ASSERT_FALSE(one.facets.empty());
+  EXPECT_EQ(one.facets, two.facets);
+  EXPECT_EQ(one.adjacency, two.adjacency);
+  for (const Triangle& f : two.facets)
+    for (const Point3& p : pts) ASSERT_NE(exact::orient3d(pts[f[0]], pts[f[1]], pts[f[2]], p), Sign::kPositive);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "exact/predicates.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -249,6 +251,8 @@ T dot3(const std::array<T, 3>& u, const std::array<T, 3>& v) {
 // term(T{}, i) summed over [lo, hi) pairwise: the rounding committed while accumulating
 // the filter's error bound then grows with log n, not with n, so Approx::sign's safety
 // factor (a few hundred operations along any path) holds for sums of any length.
+constexpr size_t kParallelSumFrom = 16384;
+
 template <class T, class Term>
 T pairwise_sum(size_t lo, size_t hi, const Term& term) {
   if (hi - lo <= 8) {
@@ -257,7 +261,11 @@ T pairwise_sum(size_t lo, size_t hi, const Term& term) {
     return sum;
   }
   const size_t mid = lo + (hi - lo) / 2;
-  return pairwise_sum<T>(lo, mid, term) + pairwise_sum<T>(mid, hi, term);
+  if (hi - lo < kParallelSumFrom) return pairwise_sum<T>(lo, mid, term) + pairwise_sum<T>(mid, hi, term);
+  // The same tree of sums on any number of threads: the same rounding.
+  T left(0.0), right(0.0);
+  tbb::parallel_invoke([&] { left = pairwise_sum<T>(lo, mid, term); }, [&] { right = pairwise_sum<T>(mid, hi, term); });
+  return left + right;
 }
 
 template <class Term>

@@ -1,10 +1,14 @@
 // Validation of a raw mesh and construction of the SolidMesh. Every geometric decision is
 // an exact predicate from engine/exact; no epsilon anywhere.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "exact/interrupt.h"
@@ -104,6 +108,110 @@ uint64_t ekey(uint32_t a, uint32_t b) {
   return a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
 }
 
+// Splits every face into triangles (tris, and the face of each in tri_face); returns what
+// is wrong with the first face that is not planar or not simple, or that has zero area.
+// Faces that are triangles already (every face of an STL) are checked in parallel.
+std::string triangulate_faces(const std::vector<Point3>& P, const std::vector<std::vector<uint32_t>>& F,
+                              std::vector<Triangle>& tris, std::vector<uint32_t>& tri_face) {
+  const uint32_t nf = uint32_t(F.size());
+  std::vector<uint8_t> degenerate(nf, 0);
+  if (std::all_of(F.begin(), F.end(), [](const std::vector<uint32_t>& v) { return v.size() == 3; })) {
+    tris.resize(nf);
+    tri_face.resize(nf);
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nf, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
+      for (uint32_t f = range.begin(); f != range.end(); ++f) {
+        const auto& v = F[f];
+        tris[f] = {v[0], v[1], v[2]};
+        tri_face[f] = f;
+        degenerate[f] = collinear(P[v[0]], P[v[1]], P[v[2]]);
+      }
+    });
+    interruption_point();
+  } else {
+    tris.reserve(nf);
+    tri_face.reserve(nf);
+    for (uint32_t f = 0; f < nf; ++f) {
+      const auto& v = F[f];
+      if (v.size() == 3) {
+        if (collinear(P[v[0]], P[v[1]], P[v[2]])) degenerate[f] = 1;
+        tris.push_back({v[0], v[1], v[2]});
+        tri_face.push_back(f);
+        continue;
+      }
+      // a non-collinear triple v0, v[k-1], v[k]... first one with v0, v1 fixed when possible
+      size_t n = v.size();
+      int ia = -1, ib = -1, ic = -1;
+      for (size_t i = 1; i < n && ia < 0; ++i)
+        for (size_t j = i + 1; j < n; ++j)
+          if (!collinear(P[v[0]], P[v[i]], P[v[j]])) {
+            ia = 0, ib = int(i), ic = int(j);
+            break;
+          }
+      if (ia < 0) {
+        degenerate[f] = 1;
+        continue;
+      }
+      const Point3 &a = P[v[ia]], &b = P[v[ib]], &c = P[v[ic]];
+      for (size_t k = 0; k < n; ++k)
+        if (orient3d(a, b, c, P[v[k]]) != Sign::kZero)
+          return "face " + S(f) + " is not planar (vertex " + S(v[k]) + " is off the plane of vertices " +
+                 S(v[ia]) + ", " + S(v[ib]) + ", " + S(v[ic]) + ")";
+      int drop = drop_axis(a, b, c);
+      size_t before = tris.size();
+      if (!triangulate_polygon(P, v, drop, tris)) return "face " + S(f) + " is a self-overlapping polygon";
+      for (size_t t = before; t < tris.size(); ++t) tri_face.push_back(f);
+    }
+  }
+  for (uint32_t f = 0; f < nf; ++f)
+    if (degenerate[f]) return "face " + S(f) + " has zero area (all vertices collinear)";
+  return {};
+}
+
+// The two faces with the same vertex set that come first (the smallest later face, with
+// the first face of its set), if any. The sorted vertex lists are kept in one array.
+std::optional<std::pair<uint32_t, uint32_t>> first_duplicate_faces(const std::vector<std::vector<uint32_t>>& F) {
+  const uint32_t nf = uint32_t(F.size());
+  std::vector<size_t> first(nf + 1, 0);
+  for (uint32_t f = 0; f < nf; ++f) first[f + 1] = first[f] + F[f].size();
+  std::vector<uint32_t> sorted(first[nf]);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nf, 4096), [&](const tbb::blocked_range<uint32_t>& range) {
+    for (uint32_t f = range.begin(); f != range.end(); ++f) {
+      std::copy(F[f].begin(), F[f].end(), sorted.begin() + first[f]);
+      std::sort(sorted.begin() + first[f], sorted.begin() + first[f + 1]);
+    }
+  });
+  auto vertices = [&](uint32_t f) { return std::span<const uint32_t>(sorted.data() + first[f], F[f].size()); };
+  auto same = [&](uint32_t a, uint32_t b) { return std::ranges::equal(vertices(a), vertices(b)); };
+  std::vector<uint32_t> order(nf);
+  std::iota(order.begin(), order.end(), 0u);
+  tbb::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    const auto va = vertices(a), vb = vertices(b);
+    if (std::ranges::lexicographical_compare(va, vb)) return true;
+    if (std::ranges::lexicographical_compare(vb, va)) return false;
+    return a < b;
+  });
+  interruption_point();  // a cancelled sort stops half done
+  uint32_t best_a = UINT32_MAX, best_b = UINT32_MAX, group_first = 0;
+  for (uint32_t k = 0; k < nf; ++k) {
+    if (k == 0 || !same(order[k], order[k - 1])) {
+      group_first = order[k];
+    } else if (order[k] < best_b) {
+      best_a = group_first;
+      best_b = order[k];
+    }
+  }
+  if (best_a == UINT32_MAX) return std::nullopt;
+  return std::make_pair(best_a, best_b);
+}
+
+// The signed volume of all shells together (only needed when there are several: with one,
+// it is that shell's).
+bool total_volume_positive(const std::vector<Point3>& P, const std::vector<Triangle>& tris) {
+  std::vector<uint32_t> all(tris.size());
+  std::iota(all.begin(), all.end(), 0u);
+  return exact::signed_volume_sign(P, tris, all) == Sign::kPositive;
+}
+
 }  // namespace
 
 StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
@@ -132,70 +240,11 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
   // 3. Polygons: planar and simple; split into triangles. 4. zero-area faces.
   std::vector<Triangle> tris;
   std::vector<uint32_t> tri_face;
-  tris.reserve(nf);
-  tri_face.reserve(nf);
-  std::vector<uint8_t> degenerate(nf, 0);
-  for (uint32_t f = 0; f < nf; ++f) {
-    const auto& v = F[f];
-    if (v.size() == 3) {
-      if (collinear(P[v[0]], P[v[1]], P[v[2]])) degenerate[f] = 1;
-      tris.push_back({v[0], v[1], v[2]});
-      tri_face.push_back(f);
-      continue;
-    }
-    // a non-collinear triple v0, v[k-1], v[k]... first one with v0, v1 fixed when possible
-    size_t n = v.size();
-    int ia = -1, ib = -1, ic = -1;
-    for (size_t i = 1; i < n && ia < 0; ++i)
-      for (size_t j = i + 1; j < n; ++j)
-        if (!collinear(P[v[0]], P[v[i]], P[v[j]])) {
-          ia = 0, ib = int(i), ic = int(j);
-          break;
-        }
-    if (ia < 0) {
-      degenerate[f] = 1;
-      continue;
-    }
-    const Point3 &a = P[v[ia]], &b = P[v[ib]], &c = P[v[ic]];
-    for (size_t k = 0; k < n; ++k)
-      if (orient3d(a, b, c, P[v[k]]) != Sign::kZero)
-        return fail("face " + S(f) + " is not planar (vertex " + S(v[k]) +
-                    " is off the plane of vertices " + S(v[ia]) + ", " + S(v[ib]) + ", " +
-                    S(v[ic]) + ")");
-    int drop = drop_axis(a, b, c);
-    size_t before = tris.size();
-    if (!triangulate_polygon(P, v, drop, tris))
-      return fail("face " + S(f) + " is a self-overlapping polygon");
-    for (size_t t = before; t < tris.size(); ++t) tri_face.push_back(f);
-  }
-  for (uint32_t f = 0; f < nf; ++f)
-    if (degenerate[f]) return fail("face " + S(f) + " has zero area (all vertices collinear)");
+  if (std::string error = triangulate_faces(P, F, tris, tri_face); !error.empty()) return fail(error);
 
   // 5. Duplicate faces (same vertex set).
-  {
-    std::vector<std::vector<uint32_t>> sorted(nf);
-    std::vector<uint32_t> order(nf);
-    for (uint32_t f = 0; f < nf; ++f) {
-      sorted[f] = F[f];
-      std::sort(sorted[f].begin(), sorted[f].end());
-    }
-    std::iota(order.begin(), order.end(), 0u);
-    tbb::parallel_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-      return sorted[a] != sorted[b] ? sorted[a] < sorted[b] : a < b;
-    });
-    interruption_point();  // a cancelled sort stops half done
-    uint32_t best_a = UINT32_MAX, best_b = UINT32_MAX, group_first = 0;
-    for (uint32_t k = 0; k < nf; ++k) {
-      if (k == 0 || sorted[order[k]] != sorted[order[k - 1]]) {
-        group_first = order[k];
-      } else if (order[k] < best_b) {
-        best_a = group_first;
-        best_b = order[k];
-      }
-    }
-    if (best_a != UINT32_MAX)
-      return fail("faces " + S(best_a) + " and " + S(best_b) + " are duplicates (same vertices)");
-  }
+  if (auto pair = first_duplicate_faces(F))
+    return fail("faces " + S(pair->first) + " and " + S(pair->second) + " are duplicates (same vertices)");
 
   // Corners / half-edges of the input polygons.
   std::vector<uint32_t> first(nf + 1, 0);
@@ -300,12 +349,8 @@ StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
                   ") encloses zero volume");
     is_void[s] = v == Sign::kNegative;
   }
-  {
-    std::vector<uint32_t> all(nt);
-    std::iota(all.begin(), all.end(), 0u);
-    if (exact::signed_volume_sign(P, tris, all) != Sign::kPositive)
-      return fail("faces point inward (total signed volume is not positive)");
-  }
+  if (nshell == 1 ? is_void[0] : !total_volume_positive(P, tris))
+    return fail("faces point inward (total signed volume is not positive)");
 
   // Triangle adjacency (includes the diagonals inside split polygons). A diagonal that is
   // also an edge elsewhere makes that edge non-manifold: a face touches a polygon's inside.

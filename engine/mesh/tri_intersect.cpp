@@ -183,43 +183,50 @@ std::optional<std::pair<uint32_t, uint32_t>> find_self_intersection(
       return std::clamp<int64_t>(f < 0 ? 0 : (f > double(n[ax] - 1) ? n[ax] - 1 : int64_t(f)),
                                  0, n[ax] - 1);
     };
-    entries.clear();
-    bool too_many = false;
+    // The cells of every box, counted in parallel, then stored in parallel at offsets that
+    // keep the order of the triangles.
+    auto cells_of = [&](size_t t, int64_t l[3], int64_t h[3]) {
+      for (int ax = 0; ax < 3; ++ax) l[ax] = idx(box[t].lo[ax], ax), h[ax] = idx(box[t].hi[ax], ax);
+      return uint64_t(h[0] - l[0] + 1) * uint64_t(h[1] - l[1] + 1) * uint64_t(h[2] - l[2] + 1);
+    };
+    std::vector<uint64_t> offset(nt + 1, 0);
+    tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
+      int64_t l[3], h[3];
+      offset[t + 1] = cells_of(t, l, h);
+    });
     // A budget of entries; a box over too many cells (one long sliver among small
-    // triangles can cover millions) stops the attempt before it is stored, and the next
-    // attempt doubles the cell. The last attempt keeps every entry, whatever their number:
-    // by then the cell is 2^21 times span / 2048 and a box covers at most 2 cells an axis.
+    // triangles can cover millions) fails the attempt before anything is stored, and the
+    // next attempt doubles the cell. The last attempt keeps every entry, whatever their
+    // number: by then the cell is 2^21 times span / 2048 and a box covers at most 2 cells
+    // an axis.
     const bool last = attempt > 20;
     const uint64_t budget = 32 * uint64_t(nt) + 1024;
+    bool too_many = false;
     for (size_t t = 0; t < nt && !too_many; ++t) {
-      int64_t l[3], h[3];
-      for (int ax = 0; ax < 3; ++ax) l[ax] = idx(box[t].lo[ax], ax), h[ax] = idx(box[t].hi[ax], ax);
-      const uint64_t cells = uint64_t(h[0] - l[0] + 1) * uint64_t(h[1] - l[1] + 1) * uint64_t(h[2] - l[2] + 1);
-      if (!last && entries.size() + cells > budget) {
-        too_many = true;
-        break;
-      }
-      for (int64_t x = l[0]; x <= h[0]; ++x)
-        for (int64_t y = l[1]; y <= h[1]; ++y)
-          for (int64_t z = l[2]; z <= h[2]; ++z)
-            entries.push_back({(uint64_t(x) << 42) | (uint64_t(y) << 21) | uint64_t(z), uint32_t(t)});
+      too_many = !last && offset[t + 1] > budget - offset[t];
+      offset[t + 1] += offset[t];
     }
     if (!too_many) {
+      entries.resize(offset[nt]);
+      tbb::parallel_for(size_t{0}, nt, [&](size_t t) {
+        int64_t l[3], h[3];
+        cells_of(t, l, h);
+        size_t k = offset[t];
+        for (int64_t x = l[0]; x <= h[0]; ++x)
+          for (int64_t y = l[1]; y <= h[1]; ++y)
+            for (int64_t z = l[2]; z <= h[2]; ++z)
+              entries[k++] = {(uint64_t(x) << 42) | (uint64_t(y) << 21) | uint64_t(z), uint32_t(t)};
+      });
+      interruption_point();
       tbb::parallel_sort(entries.begin(), entries.end());
       interruption_point();  // a cancelled sort stops half done
-      // Each entry's cell ends where the key changes.
-      std::vector<size_t> cell_end(entries.size());
-      for (size_t i = entries.size(); i-- > 0;) {
-        cell_end[i] = i + 1 < entries.size() && entries[i + 1].first == entries[i].first ? cell_end[i + 1]
-                                                                                        : i + 1;
-      }
       // The contact of entry a with a later entry of its cell, the first such in their
       // order; in parallel over the entries (big cells hold most of the pairs).
       auto contact_from = [&](size_t a) -> std::optional<std::pair<uint32_t, uint32_t>> {
         const uint64_t key = entries[a].first;
         const uint32_t ta = entries[a].second;
         const Box& A = box[ta];
-        for (size_t b = a + 1; b < cell_end[a]; ++b) {
+        for (size_t b = a + 1; b < entries.size() && entries[b].first == key; ++b) {
           const uint32_t tb = entries[b].second;
           if (tri_face[ta] == tri_face[tb]) continue;
           const Box& B = box[tb];

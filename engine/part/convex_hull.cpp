@@ -1,5 +1,8 @@
 #include "part/convex_hull.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 #include <random>
@@ -64,16 +67,10 @@ class Builder {
     point_facet_.assign(p_.size(), kNone);
     std::vector<uint32_t> order;
     order.reserve(use.size());
-    for (uint32_t q : use) {
-      if (q == a || q == b || q == c || q == d) continue;
-      order.push_back(q);
-      for (uint32_t f = 0; f < 4; ++f)
-        if (outside(f, q)) {
-          point_facet_[q] = f;
-          facets_[f].conflicts.push_back(q);
-          break;
-        }
-    }
+    for (uint32_t q : use)
+      if (q != a && q != b && q != c && q != d) order.push_back(q);
+    const uint32_t first4[] = {0, 1, 2, 3};
+    assign_conflicts(order, first4);
     std::mt19937_64 rng(0x9e3779b97f4a7c15ull);
     for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
 
@@ -155,21 +152,37 @@ class Builder {
     // Reassign the points of the removed facets (quickhull rule: a point outside the new
     // hull is outside one of the new facets).
     point_facet_[q] = kNone;
+    moving_.clear();
     for (uint32_t f : visible_) {
       Facet& F = facets_[f];
       F.alive = false;
-      for (uint32_t r : F.conflicts) {
-        if (r == q) continue;
-        point_facet_[r] = kNone;
-        for (uint32_t nf : created_)
-          if (outside(nf, r)) {
-            point_facet_[r] = nf;
-            facets_[nf].conflicts.push_back(r);
-            break;
-          }
-      }
+      for (uint32_t r : F.conflicts)
+        if (r != q) moving_.push_back(r);
       std::vector<uint32_t>().swap(F.conflicts);
     }
+    assign_conflicts(moving_, created_);
+  }
+
+  // Each point of `points` to the first of `candidates` it is strictly outside of (or to
+  // none), appended to that facet's conflicts in the order of `points`. The tests run in
+  // parallel when there are many (the first insertions move nearly every point), the
+  // lists are filled in order after: the hull is the same on any number of threads.
+  void assign_conflicts(std::span<const uint32_t> points, std::span<const uint32_t> candidates) {
+    auto first_outside = [&](uint32_t r) {
+      for (uint32_t f : candidates)
+        if (outside(f, r)) return f;
+      return kNone;
+    };
+    constexpr size_t kParallelFrom = 4096;
+    if (points.size() >= kParallelFrom) {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 1024), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) point_facet_[points[i]] = first_outside(points[i]);
+      });
+    } else {
+      for (uint32_t r : points) point_facet_[r] = first_outside(r);
+    }
+    for (uint32_t r : points)
+      if (point_facet_[r] != kNone) facets_[point_facet_[r]].conflicts.push_back(r);
   }
 
   std::span<const Point3> p_;
@@ -177,7 +190,7 @@ class Builder {
   std::vector<uint32_t> point_facet_;
   std::vector<uint32_t> mark_;
   uint32_t stamp_ = 0;
-  std::vector<uint32_t> visible_, created_;
+  std::vector<uint32_t> visible_, created_, moving_;
   std::vector<uint32_t> start_of_, end_of_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <google/protobuf/struct.pb.h>
 #include <google/protobuf/util/json_util.h>
+#include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
@@ -248,16 +249,24 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
         if (group_first[g] == kNone) group_first[g] = t; else uf.unite(group_first[g], t);
       }
     }
-    for (uint32_t t = 0; t < nt; ++t) {
-      if (tri_group[t] != kNone) continue;
-      for (uint32_t u : m.neighbor[t]) {
-        if (u <= t || tri_group[u] != kNone) continue;
-        if (I.hull[t] != I.hull[u] || I.region[t] != I.region[u]) continue;
-        if (uf.find(t) == uf.find(u)) continue;
-        if (exact::normals_within(I.P(t, 0), I.P(t, 1), I.P(t, 2), I.P(u, 0), I.P(u, 1), I.P(u, 2), k))
-          uf.unite(t, u);
+    // The edges whose normals turn by at most the feature angle, each from its smaller
+    // triangle, tested in parallel; united after (the roots do not depend on the order).
+    std::vector<std::array<bool, 3>> smooth(nt, {false, false, false});
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nt, 1024), [&](const tbb::blocked_range<uint32_t>& range) {
+      for (uint32_t t = range.begin(); t != range.end(); ++t) {
+        if (tri_group[t] != kNone) continue;
+        for (int i = 0; i < 3; ++i) {
+          const uint32_t u = m.neighbor[t][i];
+          if (u <= t || tri_group[u] != kNone || m.triangle_face[u] == m.triangle_face[t]) continue;
+          if (I.hull[t] != I.hull[u] || I.region[t] != I.region[u]) continue;
+          smooth[t][i] = exact::normals_within(I.P(t, 0), I.P(t, 1), I.P(t, 2), I.P(u, 0), I.P(u, 1), I.P(u, 2), k);
+        }
       }
-    }
+    });
+    interruption_point();
+    for (uint32_t t = 0; t < nt; ++t)
+      for (int i = 0; i < 3; ++i)
+        if (smooth[t][i]) uf.unite(t, m.neighbor[t][i]);
     // Roots are the smallest members, so features come in order of smallest triangle.
     std::vector<uint32_t> feature_of_root(nt, kNone);
     for (uint32_t t = 0; t < nt; ++t) {
