@@ -248,11 +248,12 @@ T dot3(const std::array<T, 3>& u, const std::array<T, 3>& v) {
   return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 }
 
+// Sums this long have their two halves summed in parallel.
+constexpr size_t kParallelSumFrom = 16384;
+
 // term(T{}, i) summed over [lo, hi) pairwise: the rounding committed while accumulating
 // the filter's error bound then grows with log n, not with n, so Approx::sign's safety
 // factor (a few hundred operations along any path) holds for sums of any length.
-constexpr size_t kParallelSumFrom = 16384;
-
 template <class T, class Term>
 T pairwise_sum(size_t lo, size_t hi, const Term& term) {
   if (hi - lo <= 8) {
