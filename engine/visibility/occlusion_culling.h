@@ -50,16 +50,16 @@ namespace gvm {
 // 5% fewer instructions on prusa_extruder-idler's and prusa_y-rod-holder's slowest
 // surfaces (large_tier scaled with it, so that the same unions count as large).
 //
-// Up to seed_until faces: the pocket floor of gvm_make_pocket_part (110 k sliver faces
-// around a wide LVM, thousands of boxes around each lattice direction) took 8-25 s
-// instead of 4.5 with seeds. From seed_from faces on (with `needed`), the first tier also
-// holds the faces that cover
+// From seed_from faces on (with `needed`), the first tier also holds the faces that cover
 // what the largest leave of the occluded directions on `needed` (tier_seeds.h), found with
 // seed_samples_per_face lattice directions per face. Measured in instructions, one thread
 // (prusa_extruder-idler / prusa_y-rod-holder, G): no seeds 26.86 / 25.72; from 4,096 faces
 // with 1 sample per face 23.03 / 22.74, with 2 23.42 / 23.78, with 1/2 23.90 / 22.50; from
 // 2,048 faces 23.18 / 22.74; from 8,192 faces 23.49 / 28.3 before the largest faces took
-// part (every direction of an LVM inside the first tier then asked the whole tree).
+// part (every direction of an LVM inside the first tier then asked the whole tree). Only
+// up to seed_until faces: the pocket floor of gvm_make_pocket_part (110 k sliver faces
+// around a wide LVM, thousands of boxes around each lattice direction) took 8-25 s
+// instead of 4.5 with seeds.
 struct TierPolicy {
   size_t first_tier_share = 64, min_first_tier = 64;
   size_t large_tier = 1024, pays_from = 8;
