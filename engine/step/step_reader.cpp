@@ -1,5 +1,5 @@
-// read_step: STEP translation (serialised, see gvm/step.h), then solid selection,
-// face records and tessellation. Every Open CASCADE exception becomes a Status here.
+// The STEP module's reader (step_module.h): STEP translation (serialised, see gvm/step.h),
+// then solid selection, face records and tessellation. Every Open CASCADE exception becomes a Status here.
 #include <Bnd_Box.hxx>
 #include <BRepBndLib.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -18,13 +18,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <numbers>
-#include <sstream>
 
 #include "step/step_internal.h"
+#include "step/step_module.h"
 
 namespace gvm {
 namespace step_internal {
@@ -162,13 +160,10 @@ StatusOr<StepPart> read_checked(std::string_view bytes, const StepOptions& optio
   return part;
 }
 
-}  // namespace
-
-StatusOr<StepPart> read_step(std::string_view bytes, const StepOptions& options,
-                             const std::string& source) {
+// Open CASCADE reports failures (corrupt geometry, null handles) by exceptions; a reader of
+// untrusted files must turn them into an answer.
+StatusOr<StepPart> read_bytes(std::string_view bytes, const StepOptions& options, const std::string& source) {
   if (Status s = check_options(options, source); !s.ok()) return s;
-  // Open CASCADE reports failures (corrupt geometry, null handles) by exceptions; a reader of
-  // untrusted files must turn them into an answer.
   try {
     return read_checked(bytes, options, source);
   } catch (const Standard_Failure& e) {
@@ -179,17 +174,10 @@ StatusOr<StepPart> read_step(std::string_view bytes, const StepOptions& options,
   }
 }
 
-StatusOr<StepPart> read_step(const std::string& path, const StepOptions& options) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return NotFound(path + ": no such file");
-  if (std::filesystem::is_directory(path, ec))
-    return InvalidArgument(path + ": is a directory, not a STEP file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return NotFound(path + ": cannot be opened for reading");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) return InvalidArgument(path + ": read error");
-  return read_step(std::string_view(bytes.view()), options, path);
-}
-
+}  // namespace
 }  // namespace gvm
+
+extern "C" __attribute__((visibility("default"))) const gvm::step_internal::StepModule* gvm_step_module() {
+  static constexpr gvm::step_internal::StepModule module{&gvm::read_bytes};
+  return &module;
+}
