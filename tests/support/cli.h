@@ -17,8 +17,9 @@ struct CliRun {
   std::string out;  // stdout and stderr
 };
 
-inline CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(GVM_CLI_PATH) + " " + args + " 2>&1";
+// `program` (a copy of gvm, say) with `args`.
+inline CliRun run_program(const std::string& program, const std::string& args) {
+  const std::string cmd = program + " " + args + " 2>&1";
   CliRun r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -28,6 +29,8 @@ inline CliRun run_cli(const std::string& args) {
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return r;
 }
+
+inline CliRun run_cli(const std::string& args) { return run_program(GVM_CLI_PATH, args); }
 
 inline std::string shared(const std::string& rel) { return std::string(GVM_SHARED_DIR) + "/" + rel; }
 

@@ -1,0 +1,62 @@
+// Where gvm finds its STEP module (engine/step_loader/step_loader.cpp): beside the running
+// program first, then where the build put it; a module that cannot be loaded is an error
+// of the STEP part that names it, and mesh parts never need it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/cli.h"
+#include "support/scratch_dir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using gvm::test::run_program;
+using gvm::test::shared;
+
+const std::string kStepPart = shared("data/step/bug3883_xr2-ct-214_l-bracket.stp");
+const std::string kMeshPart = shared("data/parts/trimesh_7_8ths_cube.stl");
+
+// A copy of gvm in a directory of its own: /proc/self/exe names the copy, not the build's.
+fs::path copy_of_gvm(const std::string& name) {
+  const fs::path dir = gvm::test::scratch_dir() / name;
+  fs::create_directories(dir);
+  fs::copy_file(GVM_CLI_PATH, dir / "gvm", fs::copy_options::overwrite_existing);
+  return dir;
+}
+
+const std::string kModuleName = fs::path(GVM_STEP_MODULE_PATH).filename().string();
+
+TEST(StepModule, WithoutOneBesideTheProgramTheBuildsIsUsed) {
+  const fs::path dir = copy_of_gvm("alone");
+  const auto r = run_program((dir / "gvm").string(), "analyze " + kStepPart + " -q");
+  EXPECT_EQ(r.status, 0) << r.out;
+}
+
+TEST(StepModule, OneBesideTheProgramComesFirstAndABrokenOneIsNamed) {
+  const fs::path dir = copy_of_gvm("broken");
+  std::ofstream(dir / kModuleName) << "not a shared object\n";
+  const auto step = run_program((dir / "gvm").string(), "analyze " + kStepPart + " -q");
+  EXPECT_NE(step.status, 0);
+  EXPECT_NE(step.out.find(kStepPart), std::string::npos) << step.out;
+  EXPECT_NE(step.out.find((dir / kModuleName).string() + ", which could not be loaded"), std::string::npos)
+      << step.out;
+  const auto mesh = run_program((dir / "gvm").string(), "analyze " + kMeshPart + " -q");
+  EXPECT_EQ(mesh.status, 0) << mesh.out;
+}
+
+TEST(StepModule, OneCopiedBesideTheProgramIsTheOneLoaded) {
+  const fs::path dir = copy_of_gvm("together");
+  const fs::path module = dir / kModuleName;
+  fs::copy_file(GVM_STEP_MODULE_PATH, module, fs::copy_options::overwrite_existing);
+  // The dynamic loader's own log names the file it initialises.
+  const auto r = run_program("LD_DEBUG=libs " + (dir / "gvm").string(), "analyze " + kStepPart + " -q");
+  EXPECT_EQ(r.status, 0) << r.out.substr(r.out.size() > 2000 ? r.out.size() - 2000 : 0);
+  EXPECT_NE(r.out.find("calling init: " + module.string()), std::string::npos);
+  EXPECT_EQ(r.out.find("calling init: " + std::string(GVM_STEP_MODULE_PATH)), std::string::npos);
+}
+
+}  // namespace
