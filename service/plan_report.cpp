@@ -71,7 +71,8 @@ std::string reach_list(const v1::Setup& s, const Names& name, size_t width, size
   size_t line = 0;
   for (const v1::SetupFeature& r : s.reach()) {
     if (out.size() - line > width) {
-      out += "\n" + std::string(indent, ' ');
+      out += '\n';
+      out.append(indent, ' ');
       line = out.size();
     } else if (!out.empty()) {
       out += " ";

@@ -29,7 +29,10 @@ std::map<std::string, std::vector<uint32_t>> brep_face_groups(const StepPart& pa
     name[cad.index] = "face " + std::to_string(cad.index) + " (" + std::string(name_of(cad.type)) + ")";
   for (size_t h = 0; h < part.holes.size(); ++h) {
     std::string faces;
-    for (uint32_t f : part.holes[h].faces) faces += (faces.empty() ? "" : "+") + std::to_string(f);
+    for (uint32_t f : part.holes[h].faces) {
+      if (!faces.empty()) faces += '+';
+      faces += std::to_string(f);
+    }
     for (uint32_t f : part.holes[h].faces) name[f] = "hole " + std::to_string(h) + " (faces " + faces + ")";
   }
   std::map<std::string, std::vector<uint32_t>> groups;

@@ -57,7 +57,10 @@ std::string classes_json(const FaceClasses& classes) {
     out += "}";
   }
   out += "],\"surfaceClass\":[";
-  for (size_t i = 0; i < classes.surface_class.size(); ++i) out += (i ? "," : "") + std::to_string(classes.surface_class[i]);
+  for (size_t i = 0; i < classes.surface_class.size(); ++i) {
+    if (i) out += ',';
+    out += std::to_string(classes.surface_class[i]);
+  }
   return out + "]";
 }
 

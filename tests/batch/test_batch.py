@@ -154,9 +154,13 @@ class Resume(BatchCase):
         self.assertEqual(load(os.path.join(out, "summary.json"))["skipped"], 0)
 
     def test_sigterm_interrupts_the_running_part_and_resume_finishes(self):
-        manifest = write_manifest(self.dir, TINY_PARTS)
+        # The largest part starts first and takes ten times longer than the tiny ones, so
+        # it is still running when the first tiny one is done and the signal comes (with
+        # tiny parts only, a busy machine can deliver it between two parts, when none runs).
+        long_one = os.path.join(PARTS, "prusa_adapter-printer.stl")
+        manifest = write_manifest(self.dir, [long_one] + TINY_PARTS)
         out = os.path.join(self.dir, "out")
-        proc = subprocess.Popen([GVM, "batch", manifest, "--out", out, "--threads", "1"],
+        proc = subprocess.Popen([GVM, "batch", manifest, "--out", out, "--threads", "1", "--jobs", "2"],
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         while proc.poll() is None and not (os.path.isdir(out) and any(
                 r["status"] == "BATCH_STATUS_DONE" for r in records(out).values())):
@@ -167,10 +171,11 @@ class Resume(BatchCase):
         summary = load(os.path.join(out, "summary.json"))
         statuses = [p.get("status", "BATCH_STATUS_UNSPECIFIED") for p in summary["parts"]]
         self.assertIn("BATCH_STATUS_INTERRUPTED", statuses)
+        self.assertEqual(records(out)["prusa_adapter-printer"]["status"], "BATCH_STATUS_INTERRUPTED")
         self.assertNotIn("BATCH_STATUS_RUNNING", [r["status"] for r in records(out).values()])
         self.assertIn("--resume goes on", stdout)
         batch(manifest, out, "--threads", "1", "--resume", check=0)
-        self.assertEqual(load(os.path.join(out, "summary.json"))["done"], len(TINY_PARTS))
+        self.assertEqual(load(os.path.join(out, "summary.json"))["done"], len(TINY_PARTS) + 1)
 
 
 class Scheduling(BatchCase):
