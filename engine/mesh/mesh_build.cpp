@@ -24,9 +24,7 @@ using exact::orient2d;
 using exact::orient3d;
 
 std::string S(uint64_t v) { return std::to_string(v); }
-std::string edge_name(uint32_t a, uint32_t b) {
-  return std::string("(").append(S(a)).append(", ").append(S(b)).append(")");
-}
+std::string edge_name(uint32_t a, uint32_t b) { return "(" + S(a) + ", " + S(b) + ")"; }
 
 // The axis to drop so that the plane of a, b, c projects without collapsing, and the sign
 // the triangle a, b, c has in that projection.
