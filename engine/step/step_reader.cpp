@@ -1,5 +1,6 @@
 // The STEP module's reader (step_module.h): STEP translation (serialised, see gvm/step.h),
-// then solid selection, face records and tessellation. Every Open CASCADE exception becomes a Status here.
+// then solid selection, face records and tessellation. Every Open CASCADE exception
+// becomes a Status here.
 #include <Bnd_Box.hxx>
 #include <BRepBndLib.hxx>
 #include <IFSelect_ReturnStatus.hxx>
