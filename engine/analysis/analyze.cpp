@@ -59,6 +59,7 @@ PartSummary summarize(const RawMesh& raw, const Part& part, const SolidMesh& mes
     out.cad_faces = static_cast<uint32_t>(step->cad_faces.size());
     out.linear_deflection = step->linear_deflection;
     out.angular_deflection_degrees = step->angular_deflection_degrees;
+    out.tessellation = step->tessellation;
   }
   return out;
 }
@@ -116,6 +117,7 @@ StepOptions step_options(const v1::StepOptions& o) {
   if (o.angular_deflection_degrees() > 0) out.angular_deflection_degrees = o.angular_deflection_degrees();
   if (o.has_solid()) out.solid = static_cast<int>(o.solid());
   out.group_holes = o.group_holes();
+  out.faithful = !o.brepmesh_only();
   return out;
 }
 

@@ -62,8 +62,9 @@ std::string face_label(const TopoDS_Face& face, uint32_t index);
 // Tessellates `solid` and welds the triangulation by topology into part.mesh and
 // part.face_cad; part.cad_faces must already be filled (step_tessellation.cpp). More than
 // max_triangles triangles (0: no limit) fail with kResourceExhausted before welding.
+// `faithful`: then rebuilt by make_faithful.
 Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians, uint32_t max_triangles,
-                  const std::stop_token& stop, StepPart& part);
+                  bool faithful, const std::stop_token& stop, StepPart& part);
 
 // The points of the welded mesh, keyed by topology: one per B-rep vertex, one per interior
 // node of each edge's discretisation (shared by the faces on both sides of the edge).
@@ -75,6 +76,8 @@ struct Weld {
   // Per edge: the point of each discretisation node, in the order of the edge's parameter
   // (first and last are the edge's vertices); empty until a face using the edge is meshed.
   std::vector<std::vector<uint32_t>> edge_points;
+  // The edge curve's parameter of each of those nodes (NaN where BRepMesh gave none).
+  std::vector<std::vector<double>> edge_params;
 
   // Points BRepMesh made one triangulation node (the two vertices of an edge far shorter
   // than the deflection) are merged: parent is a union-find forest over the points.
@@ -95,5 +98,13 @@ StatusOr<std::vector<uint32_t>> planar_boundary(const TopoDS_Face& face, const C
 
 // Bounding-box diagonal of a shape, in its units.
 double diagonal(const TopoDS_Shape& shape);
+
+// The faithful tessellation (step_faithful.cpp): the BRepMesh triangulation in `per_face`
+// (per B-rep face, polygons over welded points; empty for a face BRepMesh left without
+// triangles) rebuilt so that the B-rep's directions hold exactly -- ruled faces meshed
+// along their rulings, planar faces exactly planar, the points moved onto integer lattices
+// -- and part.tessellation filled. The welded points are moved in place.
+Status make_faithful(const TopoDS_Shape& solid, const TopTools_IndexedMapOfShape& faces, double linear,
+                     Weld& weld, std::vector<std::vector<std::vector<uint32_t>>>& per_face, StepPart& part);
 
 }  // namespace gvm::step_internal

@@ -154,7 +154,7 @@ StatusOr<StepPart> read_checked(std::string_view bytes, const StepOptions& optio
     return InvalidArgument(source + ": the solid has an empty bounding box");
   part.angular_deflection_degrees = options.angular_deflection_degrees;
   const double angular = options.angular_deflection_degrees * std::numbers::pi / 180;
-  if (Status s = tessellate(*solid, part.linear_deflection, angular, options.max_triangles, options.stop, part);
+  if (Status s = tessellate(*solid, part.linear_deflection, angular, options.max_triangles, options.faithful, options.stop, part);
       !s.ok()) {
     return s;
   }

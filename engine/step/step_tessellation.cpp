@@ -21,6 +21,7 @@
 #include <TopoDS_Edge.hxx>
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "step/step_internal.h"
@@ -79,6 +80,8 @@ Status weld_edge(const TopoDS_Edge& edge, const FaceMesh& fm, Weld& weld,
   const size_t n = size_t(poly->NbNodes());
   std::vector<uint32_t>& points = weld.edge_points[e];
   if (points.empty()) points.assign(n, kNone);
+  std::vector<double>& params = weld.edge_params[e];
+  if (params.empty()) params.assign(n, std::numeric_limits<double>::quiet_NaN());
   if (points.size() != n)
     return Internal(src + ": edge " + S(e) + " has " + S(n) + " discretisation nodes on face " +
                     S(fm.index) + " but " + S(points.size()) + " on a neighbouring face");
@@ -88,6 +91,7 @@ Status weld_edge(const TopoDS_Edge& edge, const FaceMesh& fm, Weld& weld,
   const gp_Trsf place = fm.loc.Transformation();
   for (size_t k = 0; k < n; ++k) {
     const int node = poly->Node(backwards ? int(n - k) : int(k + 1));
+    if (poly->HasParameters()) params[k] = poly->Parameter(backwards ? int(n - k) : int(k + 1));
     uint32_t& id = points[k];
     if (id == kNone) {
       const gp_Pnt p = fm.tri->Node(node).Transformed(place);
@@ -169,7 +173,7 @@ std::string mesher_status(int flags) {
 }  // namespace
 
 Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radians, uint32_t max_triangles,
-                  const std::stop_token& stop, StepPart& part) {
+                  bool faithful, const std::stop_token& stop, StepPart& part) {
   // A file may carry its own triangulation; ours must come from one BRepMesh run.
   BRepTools::Clean(solid);
   IMeshTools_Parameters parameters;
@@ -187,6 +191,7 @@ Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radia
   TopExp::MapShapes(solid, TopAbs_VERTEX, weld.vertices);
   weld.vertex_point.assign(size_t(weld.vertices.Extent()), kNone);
   weld.edge_points.resize(size_t(weld.edges.Extent()));
+  weld.edge_params.resize(size_t(weld.edges.Extent()));
   TopTools_IndexedMapOfShape faces;
   TopExp::MapShapes(solid, TopAbs_FACE, faces);
 
@@ -215,13 +220,22 @@ Status tessellate(const TopoDS_Shape& solid, double linear, double angular_radia
     }
     if (Status s = weld_face(face, fm, weld, per_face[fm.index]); !s.ok()) return s;
   }
+  if (faithful) {
+    if (Status s = make_faithful(solid, faces, linear, weld, per_face, part); !s.ok()) return s;
+  }
   // After all meshed faces, so that the boundary takes the neighbours' edge points.
   for (uint32_t f : untriangulated) {
+    if (!per_face[f].empty()) continue;  // the faithful tessellation triangulated it
     auto polygon = planar_boundary(TopoDS::Face(faces(int(f) + 1)), part.cad_faces[f], weld, why);
     if (!polygon.ok()) return polygon.status();
     per_face[f].push_back(std::move(*polygon));
   }
   emit(per_face, weld, part);
+  if (max_triangles > 0 && part.mesh.faces.size() > max_triangles) {
+    return ResourceExhausted(part.mesh.source + ": the tessellation has " + std::to_string(part.mesh.faces.size()) +
+                             " triangles, more than the limit of " + std::to_string(max_triangles) +
+                             " faces (a larger linear or angular deflection gives fewer)");
+  }
   return Status::Ok();
 }
 

@@ -100,6 +100,7 @@ struct PartSummary {
   std::string file_unit;
   uint32_t cad_faces = 0;
   double linear_deflection = 0, angular_deflection_degrees = 0;
+  StepTessellation tessellation;
 };
 
 struct AnalysisTiming {

@@ -18,6 +18,7 @@ v1::Analysis to_proto(const Analysis& analysis);
 void to_proto(const DirectionSet& set, v1::SphericalImage* out);
 void to_proto(const Direction& d, v1::Vec3* out);
 void to_proto(const PartSummary& part, v1::PartSummary* out);
+void to_proto(const StepTessellation& tessellation, v1::StepTessellation* out);
 v1::GvmStatus to_proto(GvmStatus status);
 
 // Protobuf's JSON mapping (lowerCamelCase names, every field printed).

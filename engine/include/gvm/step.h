@@ -21,6 +21,7 @@
 #include <string>
 #include <stop_token>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "gvm/mesh.h"
@@ -59,6 +60,38 @@ struct CadHole {
   double radius = 0;
 };
 
+// A direction of the B-rep (a plane's normal, a cylinder's or extrusion's axis) and the
+// integer vector the faithful tessellation keeps exactly for it.
+struct ExactDirection {
+  std::array<double, 3> brep{};    // as the B-rep gives it (unit; the class's first face)
+  std::array<int64_t, 3> exact{};  // the facets' relations hold for this vector exactly
+  double angle = 0;                // radians between the two lines (largest over the class)
+  uint32_t faces = 0;              // B-rep faces with this normal or axis
+};
+
+// A relation of the B-rep the faithful tessellation could not keep exactly: points of a
+// face off its plane, or off their ruling's line (a point where faces of two frames meet).
+struct InexactRelation {
+  uint32_t cad_face = 0;
+  bool ruling = false;
+  uint32_t points = 0;
+  double distance_mm = 0;  // the largest distance of one of them
+};
+
+// What the tessellation kept of the B-rep (StepOptions::faithful).
+struct StepTessellation {
+  bool faithful = false;
+  std::vector<ExactDirection> directions;
+  double max_direction_angle = 0;      // radians, over `directions`
+  double max_node_displacement = 0;    // mm: mesh point from its place on the B-rep
+  double grid = 0;                     // mm: the points are integers times this
+  uint32_t inserted_points = 0;        // edge points added so that rulings meet both rims
+  uint32_t ruled_faces = 0;            // meshed along their rulings
+  std::vector<InexactRelation> inexact;
+  // Ruled faces left as BRepMesh triangulated them, and why.
+  std::vector<std::pair<uint32_t, std::string>> brepmesh_faces;
+};
+
 struct StepOptions {
   double linear_deflection = 0;  // mm; 0: 0.1% of the bounding box diagonal
   double angular_deflection_degrees = 10;
@@ -68,6 +101,10 @@ struct StepOptions {
   // more B-rep faces than that (each gives a triangle at least) before meshing, more
   // triangles from BRepMesh before they are welded.
   uint32_t max_triangles = 0;
+  // The faithful tessellation (README, "STEP parts"): the B-rep's directions kept exactly
+  // (hole walls parallel to their axes, parallel planes parallel). false: BRepMesh's
+  // triangles as they are.
+  bool faithful = true;
   // A stop request ends the reading (kCancelled) at the next check: between parsing,
   // translation, checking and meshing, and inside translation and meshing.
   std::stop_token stop;
@@ -83,6 +120,7 @@ struct StepPart {
   std::vector<CadHole> holes;       // with StepOptions::group_holes, in order of first face
   std::string file_unit;            // the length unit the file declares ("millimetre", "metre", "inch", ...)
   double linear_deflection = 0, angular_deflection_degrees = 0;  // as applied
+  StepTessellation tessellation;
 };
 
 // Reads the file, checks that it holds the wanted solid and that the solid is a valid

@@ -1,0 +1,274 @@
+// The lattice placement of lattice_placement.h.
+#include "step/faithful/lattice_placement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "sphere/union_find.h"
+
+namespace gvm::faithful {
+namespace {
+
+using LD = long double;
+using LVec = std::array<LD, 3>;
+
+constexpr int kNoFrame = -1;
+
+LD ldot(const IVec& a, const LVec& t) { return LD(a.x) * t[0] + LD(a.y) * t[1] + LD(a.z) * t[2]; }
+
+int slot_of(const Frame& f, const IVec& v) {
+  for (int k = 0; k < 3; ++k)
+    if (f.axis[k] == v) return k;
+  return -1;
+}
+
+struct PointConstraints {
+  std::vector<uint32_t> planes, rulings;
+};
+
+class Solver {
+ public:
+  explicit Solver(const PlacementProblem& p)
+      : p_(p), dirs_(*p.directions), n_(uint32_t(p.target.size())),
+        uf_(3 * size_t(n_) + p.planes.size() + 3 * p.rulings.size()) {}
+
+  Placement run() {
+    to_grid_units();
+    collect();
+    choose_ruling_frames();
+    choose_point_frames();
+    unite();
+    values();
+    Placement out;
+    out.grid.resize(n_);
+    for (uint32_t i = 0; i < n_; ++i) out.grid[i] = position(i);
+    report(out);
+    return out;
+  }
+
+ private:
+  const IVec& vec(uint32_t cls) const { return dirs_.classes[cls].exact; }
+  uint32_t point_var(uint32_t p, int k) const { return 3 * p + uint32_t(k); }
+  uint32_t plane_var(uint32_t f) const { return 3 * n_ + f; }
+  uint32_t ruling_var(uint32_t r, int k) const { return 3 * n_ + uint32_t(p_.planes.size()) + 3 * r + uint32_t(k); }
+
+  void to_grid_units() {
+    target_.resize(n_);
+    for (uint32_t i = 0; i < n_; ++i)
+      for (int k = 0; k < 3; ++k) target_[i][k] = std::ldexp(LD(p_.target[i][k]), -p_.grid_exponent);
+  }
+
+  void collect() {
+    at_.resize(n_);
+    for (uint32_t f = 0; f < p_.planes.size(); ++f)
+      for (uint32_t q : p_.planes[f].points) at_[q].planes.push_back(f);
+    for (uint32_t r = 0; r < p_.rulings.size(); ++r)
+      for (uint32_t q : p_.rulings[r].points) at_[q].rulings.push_back(r);
+  }
+
+  int score(const Frame& f, const PointConstraints& c) const {
+    int s = 0;
+    for (uint32_t pl : c.planes) s += slot_of(f, vec(p_.planes[pl].cls)) >= 0;
+    for (uint32_t r : c.rulings) s += slot_of(f, vec(p_.rulings[r].cls)) >= 0;
+    return s;
+  }
+
+  // Each ruling in the frame of its axis that fits most of its points' other faces.
+  void choose_ruling_frames() {
+    ruling_frame_.assign(p_.rulings.size(), kNoFrame);
+    for (uint32_t r = 0; r < p_.rulings.size(); ++r) {
+      int best = -1;
+      for (int f = 0; f < int(dirs_.frames.size()); ++f) {
+        if (slot_of(dirs_.frames[f], vec(p_.rulings[r].cls)) < 0) continue;
+        int s = 0;
+        for (uint32_t q : p_.rulings[r].points) s += score(dirs_.frames[f], at_[q]);
+        if (s > best) best = s, ruling_frame_[r] = f;
+      }
+    }
+  }
+
+  // A point on rulings takes the frame of most of them; else the frame of most of its planes.
+  void choose_point_frames() {
+    frame_.assign(n_, kNoFrame);
+    for (uint32_t q = 0; q < n_; ++q) {
+      const PointConstraints& c = at_[q];
+      int best = -1;
+      for (int f = 0; f < int(dirs_.frames.size()); ++f) {
+        int s = score(dirs_.frames[f], c);
+        if (s == 0) continue;
+        if (!c.rulings.empty()) {
+          const int own = int(std::count_if(c.rulings.begin(), c.rulings.end(),
+                                            [&](uint32_t r) { return ruling_frame_[r] == f; }));
+          if (own == 0) continue;
+          s += 4 * own;
+        }
+        if (s > best) best = s, frame_[q] = f;
+      }
+    }
+  }
+
+  void unite() {
+    for (uint32_t f = 0; f < p_.planes.size(); ++f)
+      for (uint32_t q : p_.planes[f].points) {
+        const int k = frame_[q] == kNoFrame ? -1 : slot_of(dirs_.frames[frame_[q]], vec(p_.planes[f].cls));
+        if (k >= 0) uf_.unite(point_var(q, k), plane_var(f));
+      }
+    for (uint32_t r = 0; r < p_.rulings.size(); ++r) {
+      const Frame& fr = dirs_.frames[ruling_frame_[r]];
+      for (uint32_t q : p_.rulings[r].points) {
+        if (frame_[q] != ruling_frame_[r]) continue;
+        for (int k = 0; k < 3; ++k)
+          if (fr.axis[k] != vec(p_.rulings[r].cls)) uf_.unite(point_var(q, k), ruling_var(r, k));
+      }
+    }
+  }
+
+  // Each variable's value: a plane's offset from the B-rep, else the mean coordinate of its
+  // points (a ruling's include every point it should hold).
+  void values() {
+    struct Acc {
+      std::optional<i128> plane;
+      LD sum = 0;
+      uint32_t count = 0;
+      bool constrained = false;
+    };
+    std::map<uint32_t, Acc> acc;
+    for (uint32_t f = 0; f < p_.planes.size(); ++f) {
+      Acc& a = acc[uf_.find(plane_var(f))];
+      a.constrained = true;
+      if (a.plane) continue;
+      const IVec& n = vec(p_.planes[f].cls);
+      LVec point;
+      for (int k = 0; k < 3; ++k) point[k] = std::ldexp(LD(p_.planes[f].point[k]), -p_.grid_exponent);
+      a.plane = i128(std::llround(ldot(n, point) / LD(dot(n, n))));
+    }
+    for (uint32_t r = 0; r < p_.rulings.size(); ++r) {
+      const Frame& fr = dirs_.frames[ruling_frame_[r]];
+      for (int k = 0; k < 3; ++k) {
+        if (fr.axis[k] == vec(p_.rulings[r].cls)) continue;
+        Acc& a = acc[uf_.find(ruling_var(r, k))];
+        a.constrained = true;
+        for (uint32_t q : p_.rulings[r].points) {
+          a.sum += ldot(fr.axis[k], target_[q]) / LD(dot(fr.axis[k], fr.axis[k]));
+          ++a.count;
+        }
+      }
+    }
+    for (uint32_t q = 0; q < n_; ++q) {
+      if (frame_[q] == kNoFrame) continue;
+      const Frame& fr = dirs_.frames[frame_[q]];
+      for (int k = 0; k < 3; ++k) {
+        auto it = acc.find(uf_.find(point_var(q, k)));
+        if (it == acc.end()) continue;
+        it->second.sum += ldot(fr.axis[k], target_[q]) / LD(dot(fr.axis[k], fr.axis[k]));
+        ++it->second.count;
+      }
+    }
+    for (auto& [root, a] : acc)
+      value_[root] = a.plane ? *a.plane : i128(std::llround(a.count ? a.sum / a.count : 0));
+  }
+
+  std::optional<i128> fixed(uint32_t q, int k) {
+    auto it = value_.find(uf_.find(point_var(q, k)));
+    if (it == value_.end()) return std::nullopt;
+    return it->second;
+  }
+
+  IVec rounded(const LVec& t) const { return {std::llround(t[0]), std::llround(t[1]), std::llround(t[2])}; }
+
+  // The lattice point of a-perp nearest to r (Babai over a reduced basis, four neighbours).
+  IVec nearest_orthogonal(const IVec& a, const LVec& r) {
+    auto it = basis_.find({a.x, a.y, a.z});
+    if (it == basis_.end()) it = basis_.emplace(std::array<int64_t, 3>{a.x, a.y, a.z}, orthogonal_lattice(a)).first;
+    const auto& [b1, b2] = it->second;
+    const LD g11 = LD(dot(b1, b1)), g12 = LD(dot(b1, b2)), g22 = LD(dot(b2, b2));
+    const LD r1 = ldot(b1, r), r2 = ldot(b2, r), det = g11 * g22 - g12 * g12;
+    const LD alpha = (r1 * g22 - r2 * g12) / det, beta = (r2 * g11 - r1 * g12) / det;
+    IVec best;
+    LD best_d = -1;
+    for (LD ia : {std::floor(alpha), std::ceil(alpha)})
+      for (LD ib : {std::floor(beta), std::ceil(beta)}) {
+        const IVec v = int64_t(ia) * b1 + int64_t(ib) * b2;
+        const LD dx = v.x - r[0], dy = v.y - r[1], dz = v.z - r[2];
+        const LD d = dx * dx + dy * dy + dz * dz;
+        if (best_d < 0 || d < best_d) best_d = d, best = v;
+      }
+    return best;
+  }
+
+  IVec position(uint32_t q) {
+    const LVec& t = target_[q];
+    if (frame_[q] == kNoFrame) return rounded(t);
+    const Frame& fr = dirs_.frames[frame_[q]];
+    std::optional<i128> x[3] = {fixed(q, 0), fixed(q, 1), fixed(q, 2)};
+    IVec base;
+    int free_slots = 0, free_k = -1, fixed_k = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (x[k]) base = base + int64_t(*x[k]) * fr.axis[k], fixed_k = k;
+      else ++free_slots, free_k = k;
+    }
+    const LVec rest = {t[0] - base.x, t[1] - base.y, t[2] - base.z};
+    if (free_slots == 0) return base;
+    if (free_slots == 3) return rounded(t);
+    if (free_slots == 1) {
+      const IVec& a = fr.axis[free_k];
+      return base + std::llround(ldot(a, rest) / LD(dot(a, a))) * a;
+    }
+    return base + nearest_orthogonal(fr.axis[fixed_k], rest);
+  }
+
+  void report(Placement& out) {
+    const LD unit = std::ldexp(LD(1), p_.grid_exponent);
+    for (uint32_t q = 0; q < n_; ++q) {
+      const IVec& g = out.grid[q];
+      const LD dx = g.x * unit - p_.target[q][0], dy = g.y * unit - p_.target[q][1], dz = g.z * unit - p_.target[q][2];
+      out.max_displacement_mm = std::max(out.max_displacement_mm, double(std::sqrt(dx * dx + dy * dy + dz * dz)));
+    }
+    for (uint32_t f = 0; f < p_.planes.size(); ++f) {
+      const IVec& n = vec(p_.planes[f].cls);
+      const i128 level = value_.at(uf_.find(plane_var(f))) * dot(n, n);
+      Miss m{p_.planes[f].face, false, 0, 0};
+      for (uint32_t q : p_.planes[f].points) {
+        const i128 off = dot(n, out.grid[q]) - level;
+        if (off == 0) continue;
+        ++m.points;
+        m.distance_mm = std::max(m.distance_mm, double(std::fabs(LD(off)) / std::sqrt(LD(dot(n, n))) * unit));
+      }
+      if (m.points) out.misses.push_back(m);
+    }
+    for (uint32_t r = 0; r < p_.rulings.size(); ++r) {
+      const IVec& c = vec(p_.rulings[r].cls);
+      const Frame& fr = dirs_.frames[ruling_frame_[r]];
+      IVec anchor;  // a point of the ruling's line
+      for (int k = 0; k < 3; ++k)
+        if (fr.axis[k] != c) anchor = anchor + int64_t(value_.at(uf_.find(ruling_var(r, k)))) * fr.axis[k];
+      Miss m{p_.rulings[r].face, true, 0, 0};
+      for (uint32_t q : p_.rulings[r].points) {
+        const IVec off = cross(out.grid[q] - anchor, c);
+        if (off.is_zero()) continue;
+        ++m.points;
+        const LD len = std::sqrt(LD(off.x) * off.x + LD(off.y) * off.y + LD(off.z) * off.z);
+        m.distance_mm = std::max(m.distance_mm, double(len / std::sqrt(LD(dot(c, c))) * unit));
+      }
+      if (m.points) out.misses.push_back(m);
+    }
+  }
+
+  const PlacementProblem& p_;
+  const ExactDirections& dirs_;
+  uint32_t n_;
+  sphere::UnionFind uf_;
+  std::vector<LVec> target_;
+  std::vector<PointConstraints> at_;
+  std::vector<int> ruling_frame_, frame_;
+  std::map<uint32_t, i128> value_;
+  std::map<std::array<int64_t, 3>, std::array<IVec, 2>> basis_;
+};
+
+}  // namespace
+
+Placement place_on_lattices(const PlacementProblem& problem) { return Solver(problem).run(); }
+
+}  // namespace gvm::faithful
