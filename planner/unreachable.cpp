@@ -25,6 +25,45 @@ std::map<uint32_t, uint32_t> feature_of_faces(const Analysis& analysis) {
   return out;
 }
 
+std::string feature_list(const Analysis& analysis, const std::vector<uint32_t>& ids) {
+  std::string out;
+  const size_t shown = std::min<size_t>(ids.size(), 8);
+  for (size_t i = 0; i < shown; ++i) out += (i ? ", " : "") + analysis.features()[ids[i]].name;
+  if (shown < ids.size()) out += " and " + std::to_string(ids.size() - shown) + " more";
+  return out;
+}
+
+// LVM(S + N_S) is empty. Whether S alone has no common direction (an undercut of its own
+// shape) or its neighbours across concave edges take the rest: then the fewest neighbouring
+// features found (each left out in turn while the rest still leave nothing) are named.
+void explain_empty_lvm(const Analysis& analysis, const Surface& s, UnreachableSurface& out) {
+  const StatusOr<DirectionSet> own = analysis.own_lvm(s.faces);
+  if (!own.ok() || own->is_empty()) {
+    out.detail = "LVM(S) is empty: no direction faces all of its own faces, an undercut of its own shape";
+    return;
+  }
+  const std::map<uint32_t, uint32_t> feature = feature_of_faces(analysis);
+  std::map<uint32_t, std::vector<uint32_t>> by_feature;  // N_S faces of each neighbouring feature
+  for (uint32_t face : analysis.neighbor_faces(s.faces))
+    if (auto it = feature.find(face); it != feature.end()) by_feature[it->second].push_back(face);
+  auto leaves_nothing = [&](const std::map<uint32_t, std::vector<uint32_t>>& kept) {
+    std::vector<uint32_t> faces = s.faces;
+    for (const auto& [f, fs] : kept) faces.insert(faces.end(), fs.begin(), fs.end());
+    const StatusOr<DirectionSet> lvm = analysis.own_lvm(faces);
+    return lvm.ok() && lvm->is_empty();
+  };
+  for (auto it = by_feature.begin(); it != by_feature.end();) {
+    auto without = by_feature;
+    without.erase(it->first);
+    it = leaves_nothing(without) ? by_feature.erase(it) : std::next(it);
+  }
+  out.reason = v1::UNREACHABLE_REASON_NEIGHBOR_OCCLUDED;
+  for (const auto& [f, fs] : by_feature) out.blocking_features.push_back(f);
+  out.detail = "LVM(S) is " + own->description() +
+               ", but the faces beside it across its concave edges leave no direction of it (LVM(S + N_S) is "
+               "empty): blocked by " + feature_list(analysis, out.blocking_features);
+}
+
 }  // namespace
 
 v1::UnreachableReason reason_of_empty_reach(const Surface& s, bool planar_normal_only) {
@@ -45,7 +84,7 @@ void explain(const Analysis& analysis, const Surface& s, UnreachableSurface& out
       out.detail = "the analysis skipped the global occlusion (--lvm-only): its GVM is unknown";
       return;
     case v1::UNREACHABLE_REASON_SELF_OCCLUDED:
-      out.detail = "LVM(S + N_S) is empty: an undercut of its own shape or of its neighbours";
+      explain_empty_lvm(analysis, s, out);
       return;
     case v1::UNREACHABLE_REASON_NOT_ALONG_NORMAL:
       out.detail = "its GVM (" + s.maps.gvm->description() + ") does not contain its own normal " +
@@ -77,13 +116,7 @@ void explain(const Analysis& analysis, const Surface& s, UnreachableSurface& out
     out.detail += "faces met only where they graze (no face crossed)";
     return;
   }
-  const size_t shown = std::min<size_t>(out.blocking_features.size(), 8);
-  for (size_t i = 0; i < shown; ++i) {
-    out.detail += (i ? ", " : "") + analysis.features()[out.blocking_features[i]].name;
-  }
-  if (shown < out.blocking_features.size()) {
-    out.detail += " and " + std::to_string(out.blocking_features.size() - shown) + " more";
-  }
+  out.detail += feature_list(analysis, out.blocking_features);
 }
 
 }  // namespace gvm::planner

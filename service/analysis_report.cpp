@@ -47,8 +47,27 @@ std::string step_line(const v1::PartSummary& part) {
   std::ostringstream line;
   line << "  STEP: " << part.cad_faces() << " B-rep faces, file unit " << part.file_unit()
        << " (coordinates in mm), tessellated at " << part.linear_deflection() << " mm and "
-       << part.angular_deflection_degrees() << " deg\n";
+       << part.angular_deflection_degrees() << " deg\n"
+       << "  tessellation: " << tessellation_text(part.step_tessellation()) << "\n";
   return line.str();
+}
+
+std::string tessellation_text(const v1::StepTessellation& t) {
+  if (!t.faithful()) return "BRepMesh's triangles as they are (--brepmesh-only)";
+  std::ostringstream s;
+  s << "faithful: " << t.directions_size() << " B-rep directions kept exactly (within " << std::setprecision(2)
+    << t.max_direction_angle_radians() << " rad of the B-rep), " << t.ruled_faces()
+    << " ruled faces meshed along their rulings, points moved at most " << t.max_node_displacement_mm() << " mm";
+  if (t.inexact_size() > 0) {
+    double worst = 0;
+    for (const auto& r : t.inexact()) worst = std::max(worst, r.distance_mm());
+    s << "; " << t.inexact_size() << " relations kept within " << worst << " mm only (where faces of two frames meet)";
+  }
+  if (t.brepmesh_faces_size() > 0) {
+    s << "; " << t.brepmesh_faces_size() << " faces as BRepMesh made them (face " << t.brepmesh_faces(0).cad_face()
+      << ": " << t.brepmesh_faces(0).reason() << (t.brepmesh_faces_size() > 1 ? "; ..." : "") << ")";
+  }
+  return s.str();
 }
 
 void print_report(const v1::Analysis& a, std::ostream& out) {

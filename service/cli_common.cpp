@@ -85,6 +85,7 @@ void add_step_options(CLI::App& command, v1::StepOptions& step) {
     return true;
   });
   command.add_flag_callback("--group-holes", [&step] { step.set_group_holes(true); });
+  command.add_flag_callback("--brepmesh-only", [&step] { step.set_brepmesh_only(true); });
 }
 
 }  // namespace

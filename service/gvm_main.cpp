@@ -56,6 +56,9 @@ Options of both commands:
                        (grouped from the mesh, as for any mesh)
   --group-holes        STEP: the B-rep faces of one hole (coaxial cylinder and
                        cone walls, the planes closing them) are one feature
+  --brepmesh-only      STEP: BRepMesh's triangles as they are, without the faithful
+                       tessellation (which keeps the B-rep's normals and axes
+                       exactly: hole walls parallel to their axes); to compare
   --threads N          worker threads (default: all cores)
   --method M           how the occlusion by O_S is computed: eme (effective
                        Minkowski envelope, the default) or convex (union of

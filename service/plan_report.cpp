@@ -44,6 +44,7 @@ const char* reason_text(v1::UnreachableReason r) {
     case v1::UNREACHABLE_REASON_NO_HEAD_ORIENTATION: return "no head orientation";
     case v1::UNREACHABLE_REASON_GVM_NOT_COMPUTED: return "GVM not computed";
     case v1::UNREACHABLE_REASON_NO_CLEARANCE: return "not enough clearance";
+    case v1::UNREACHABLE_REASON_NEIGHBOR_OCCLUDED: return "blocked by its neighbours";
     default: return "unreachable";
   }
 }

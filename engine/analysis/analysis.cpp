@@ -8,6 +8,7 @@
 #include "exact/exact_vec.h"
 #include "exact/interrupt.h"
 #include "exact/predicates.h"
+#include "sphere/local_visibility_map.h"
 #include "visibility/occlusion_probe.h"
 
 namespace gvm {
@@ -159,6 +160,22 @@ std::vector<uint32_t> Analysis::blocking_faces(std::span<const uint32_t> faces,
   } catch (const Interrupted&) {
     return {};
   }
+}
+
+StatusOr<DirectionSet> Analysis::own_lvm(std::span<const uint32_t> faces) const {
+  const SolidMesh& mesh = impl_->part.mesh();
+  auto tris = triangles_of(mesh, faces);
+  if (!tris.ok()) return tris.status();
+  std::vector<exact::ExactVec> normals;
+  for (uint32_t t : *tris) normals.push_back(normal_of(mesh, t));
+  return DirectionSet(std::make_shared<const sphere::SphericalImage>(sphere::local_visibility_map(normals)));
+}
+
+std::vector<uint32_t> Analysis::neighbor_faces(std::span<const uint32_t> faces) const {
+  const SolidMesh& mesh = impl_->part.mesh();
+  auto tris = triangles_of(mesh, faces);
+  if (!tris.ok() || tris->empty()) return {};
+  return input_faces(mesh, impl_->part.neighbor_occluders(*tris));
 }
 
 std::vector<std::vector<uint32_t>> Analysis::planar_pieces(std::span<const uint32_t> faces) const {

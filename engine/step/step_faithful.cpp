@@ -17,6 +17,9 @@
 // report says which and why.
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <Geom_Curve.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
@@ -217,12 +220,16 @@ class Faithful {
     const Snapshot start{weld_.edge_points, weld_.edge_params, weld_.mesh->points, weld_.parent, per_face_};
     for (uint32_t attempt = 0;; ++attempt) {
       std::map<uint32_t, std::string> demote;
+      const size_t forced = forced_.size();
       const faithful::Placement placement = attempt_once(demote);
-      if (demote.empty() || attempt == n_) {
+      if ((demote.empty() && forced_.size() == forced) || attempt == 2 * n_) {
         finish(placement);
         return Status::Ok();
       }
-      demoted_.insert(demote.begin(), demote.end());
+      if (forced_.size() == forced) {
+        demoted_.insert(demote.begin(), demote.end());
+        std::erase_if(forced_, [&](const EdgeInsertion& i) { return demoted_.count(i.face) > 0; });
+      }
       weld_.edge_points = start.edge_points;
       weld_.edge_params = start.edge_params;
       weld_.mesh->points = start.points;
@@ -237,6 +244,8 @@ class Faithful {
   faithful::Placement attempt_once(std::map<uint32_t, std::string>& demote) {
     before_ = chains(weld_);
     asked_by_.clear();
+    std::vector<EdgeInsertion> forced = forced_;
+    inserted_ = insert(forced, weld_, asked_by_);
     mesh_ruled_faces();
     faithful::Placement placement = place();
     triangulate_planes(placement, demote);
@@ -276,7 +285,7 @@ class Faithful {
         if (added == 0 || total > 2 * budget) break;
       }
       if (added == 0) {
-        inserted_ = total;
+        inserted_ += total;
         break;
       }
       const uint32_t worst = uint32_t(std::max_element(asked.begin(), asked.end()) - asked.begin());
@@ -288,8 +297,8 @@ class Faithful {
       weld_.parent.resize(parents);
       asked_by_.clear();
     }
-    for (auto& r : ruled_)
-      if (r) r->find_rulings(weld_);
+    for (uint32_t f = 0; f < n_; ++f)
+      if (ruled_[f]) ruled_[f]->find_rulings(weld_);
   }
 
   void mesh_ruled_faces() {
@@ -451,12 +460,48 @@ class Faithful {
         continue;
       }
       planar_failures_[f] = why;
+      if (!companions_tried_.count(f) && add_companions(f, loops)) continue;
+      // One at a time, so that a face whose partner across the sliver is left out can stay.
       for (const auto& loop : loops)
         for (uint32_t q : loop.ids)
-          if (auto it = asked_by_.find(q); it != asked_by_.end())
+          if (auto it = asked_by_.find(q); it != asked_by_.end() && !demoted_.count(it->second) && demote.empty())
             demote[it->second] = "its rulings put points on the boundary of face " + std::to_string(f) +
                                  " (a plane) that make it cross itself";
     }
+  }
+
+  // A thin planar face (a crescent between two arcs that touch) whose boundary the added
+  // points make cross itself: each added point gets a companion on the face's other edges
+  // nearby (closer than the deflection), so that both sides of the sliver have points
+  // across from each other and their chords do not cross. True when any was found; they are
+  // added from the next attempt on.
+  bool add_companions(uint32_t f, const std::vector<faithful::PlanarLoop>& loops) {
+    companions_tried_.insert(f);
+    std::vector<std::vector<EdgeUse>> wires = face_wires(face(f), weld_);
+    bool any = false;
+    for (const auto& loop : loops)
+      for (uint32_t q : loop.ids) {
+        if (!asked_by_.count(q)) continue;
+        const Point3& p = weld_.mesh->points[q];
+        for (const auto& wire : wires)
+          for (const EdgeUse& use : wire) {
+            const std::vector<uint32_t>& chain = weld_.edge_points[use.edge];
+            if (use.degenerated || std::find(chain.begin(), chain.end(), q) != chain.end()) continue;
+            const TopoDS_Edge& edge = TopoDS::Edge(weld_.edges(use.edge + 1));
+            double first, last;
+            const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+            if (curve.IsNull()) continue;
+            gp_Pnt at(p.x, p.y, p.z);
+            if (!edge.Location().IsIdentity()) at.Transform(edge.Location().Transformation().Inverted());
+            GeomAPI_ProjectPointOnCurve projection(at, curve, first, last);
+            if (projection.NbPoints() == 0 || projection.LowerDistance() > linear_) continue;
+            const double t = projection.LowerDistanceParameter();
+            if (t <= first || t >= last) continue;
+            forced_.push_back({use.edge, t, asked_by_.at(q)});
+            any = true;
+          }
+      }
+    return any;
   }
 
   void split_other_faces() {
@@ -512,6 +557,8 @@ class Faithful {
   std::vector<bool> stripped_, planes_done_;
   std::map<uint32_t, std::string> demoted_, strip_failures_, planar_failures_;
   std::map<uint32_t, uint32_t> asked_by_;  // added point -> the face whose rulings asked for it
+  std::vector<EdgeInsertion> forced_;      // companions across thin planar faces
+  std::set<uint32_t> companions_tried_;
   uint32_t inserted_ = 0;
   int grid_exponent_ = 0;
 };

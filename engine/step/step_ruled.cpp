@@ -13,6 +13,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 #include <ElSLib.hxx>
+#include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
 
 #include <algorithm>
@@ -64,8 +65,9 @@ std::pair<double, double> RuledFace::uv_at(const EdgeUse& use, double parameter,
   const gp_Pnt2d uv = use.pcurve->Value(parameter);
   double u, v;
   if (cylinder_) ElSLib::Parameters(*cylinder_, p, u, v);
-  else if (cone_) ElSLib::Parameters(*cone_, p, u, v);
-  else return {uv.X(), uv.Y()};
+  else if (cone_ && gp_Lin(cone_->Axis()).Distance(p) > 1e-9 * (1 + std::fabs(cone_->RefRadius())))
+    ElSLib::Parameters(*cone_, p, u, v);
+  else return {uv.X(), uv.Y()};  // not projectable, or a cone's apex: on every ruling, by its pcurve
   const double turn = 2 * M_PI;
   return {u + turn * std::round((uv.X() - u) / turn), v};
 }

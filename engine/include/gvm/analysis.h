@@ -130,6 +130,14 @@ class Analysis {
   // enter the solid there), decided exactly; u should be in the faces' LVM(S + N_S).
   // Empty when the calling TBB task group is cancelled.
   std::vector<uint32_t> blocking_faces(std::span<const uint32_t> faces, const Direction& u) const;
+  // LVM(S) of the given faces alone, without their neighbouring occluders: the directions
+  // every one of their triangles faces (the intersection of the closed hemispheres of their
+  // normals), exactly. Empty when the faces have no common direction: an undercut of their
+  // own shape. kInvalidArgument names a face not in the part.
+  StatusOr<DirectionSet> own_lvm(std::span<const uint32_t> faces) const;
+  // N_S of the given faces as input faces (faces outside S beside it across a concave edge,
+  // or covering a vertex of S from behind: Part::neighbor_occluders), ascending.
+  std::vector<uint32_t> neighbor_faces(std::span<const uint32_t> faces) const;
   // The given faces in maximal edge-connected pieces that lie in one plane with one
   // orientation (a triangulated CAD face is one piece; each facet of a curved face is
   // its own), each ascending, in order of their smallest face.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 
 #include "sphere/union_find.h"
@@ -15,6 +16,7 @@ using LD = long double;
 using LVec = std::array<LD, 3>;
 
 constexpr int kNoFrame = -1;
+constexpr uint32_t kNoAnchor = UINT32_MAX;
 
 LD ldot(const IVec& a, const LVec& t) { return LD(a.x) * t[0] + LD(a.y) * t[1] + LD(a.z) * t[2]; }
 
@@ -39,11 +41,13 @@ class Solver {
     collect();
     choose_ruling_frames();
     choose_point_frames();
+    choose_anchors();
     unite();
     values();
     Placement out;
     out.grid.resize(n_);
     for (uint32_t i = 0; i < n_; ++i) out.grid[i] = position(i);
+    for (uint32_t r : anchored_order_) place_along_anchor(r, out.grid);  // parents first
     report(out);
     return out;
   }
@@ -109,6 +113,61 @@ class Solver {
     }
   }
 
+  // A ruling of one frame that meets a ruling of another at a point (an oblique hole
+  // breaking into a bore along z) cannot have both on lattice lines of their frames. So
+  // rulings are anchored: such a point is placed in one ruling's frame, and the other
+  // ruling's line is drawn through it along its axis, its other points moved onto that line
+  // (their planes normal to it kept as closely as the grid allows). The rulings that meet
+  // form a graph whose edges are the points where they meet; each component is walked from
+  // one root on its lattice, and every ruling reached is anchored at the point it was
+  // reached by, so that every ruling of a tree of meetings holds exactly. A ruling reached
+  // twice (a cycle of meetings) keeps its first anchor; the second point is a miss.
+  void choose_anchors() {
+    anchor_.assign(p_.rulings.size(), kNoAnchor);
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> meets(p_.rulings.size());  // (ruling, point)
+    for (uint32_t q = 0; q < n_; ++q) {
+      const std::vector<uint32_t>& rs = at_[q].rulings;
+      for (size_t i = 0; i < rs.size(); ++i)
+        for (size_t j = i + 1; j < rs.size(); ++j)
+          if (ruling_frame_[rs[i]] != ruling_frame_[rs[j]]) {
+            meets[rs[i]].push_back({rs[j], q});
+            meets[rs[j]].push_back({rs[i], q});
+          }
+    }
+    std::vector<bool> seen(p_.rulings.size(), false);
+    std::vector<uint32_t> roots(p_.rulings.size());
+    std::iota(roots.begin(), roots.end(), 0u);
+    // Roots on the lowest frame first (the coordinate frame's lattice is the finest).
+    std::stable_sort(roots.begin(), roots.end(), [&](uint32_t a, uint32_t b) { return ruling_frame_[a] < ruling_frame_[b]; });
+    for (uint32_t root : roots) {
+      if (seen[root] || meets[root].empty()) continue;
+      seen[root] = true;
+      std::vector<uint32_t> queue = {root};
+      for (size_t k = 0; k < queue.size(); ++k)
+        for (auto [next, q] : meets[queue[k]]) {
+          if (seen[next]) continue;
+          seen[next] = true;
+          frame_[q] = ruling_frame_[queue[k]];
+          anchor_[next] = q;
+          anchored_order_.push_back(next);
+          queue.push_back(next);
+        }
+    }
+  }
+
+  void place_along_anchor(uint32_t r, std::vector<IVec>& grid) {
+    const IVec& c = vec(p_.rulings[r].cls);
+    const IVec a = grid[anchor_[r]];
+    const LD cc = LD(dot(c, c));
+    for (uint32_t q : p_.rulings[r].points) {
+      if (q == anchor_[r]) continue;
+      LD t = ldot(c, {target_[q][0] - a.x, target_[q][1] - a.y, target_[q][2] - a.z}) / cc;
+      for (uint32_t pl : at_[q].planes)
+        if (vec(p_.planes[pl].cls) == c) t = (LD(value_.at(uf_.find(plane_var(pl))) * dot(c, c)) - LD(dot(c, a))) / cc;
+      grid[q] = a + std::llround(t) * c;
+    }
+  }
+
   void unite() {
     for (uint32_t f = 0; f < p_.planes.size(); ++f)
       for (uint32_t q : p_.planes[f].points) {
@@ -116,6 +175,7 @@ class Solver {
         if (k >= 0) uf_.unite(point_var(q, k), plane_var(f));
       }
     for (uint32_t r = 0; r < p_.rulings.size(); ++r) {
+      if (anchor_[r] != kNoAnchor) continue;
       const Frame& fr = dirs_.frames[ruling_frame_[r]];
       for (uint32_t q : p_.rulings[r].points) {
         if (frame_[q] != ruling_frame_[r]) continue;
@@ -242,8 +302,10 @@ class Solver {
       const IVec& c = vec(p_.rulings[r].cls);
       const Frame& fr = dirs_.frames[ruling_frame_[r]];
       IVec anchor;  // a point of the ruling's line
-      for (int k = 0; k < 3; ++k)
-        if (fr.axis[k] != c) anchor = anchor + int64_t(value_.at(uf_.find(ruling_var(r, k)))) * fr.axis[k];
+      if (anchor_[r] != kNoAnchor) anchor = out.grid[anchor_[r]];
+      else
+        for (int k = 0; k < 3; ++k)
+          if (fr.axis[k] != c) anchor = anchor + int64_t(value_.at(uf_.find(ruling_var(r, k)))) * fr.axis[k];
       Miss m{p_.rulings[r].face, true, 0, 0};
       for (uint32_t q : p_.rulings[r].points) {
         const IVec off = cross(out.grid[q] - anchor, c);
@@ -263,6 +325,8 @@ class Solver {
   std::vector<LVec> target_;
   std::vector<PointConstraints> at_;
   std::vector<int> ruling_frame_, frame_;
+  std::vector<uint32_t> anchor_;  // per ruling: the point it is anchored at, or kNoAnchor
+  std::vector<uint32_t> anchored_order_;
   std::map<uint32_t, i128> value_;
   std::map<std::array<int64_t, 3>, std::array<IVec, 2>> basis_;
 };

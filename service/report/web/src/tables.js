@@ -29,7 +29,8 @@ export function swatch(color) {
 }
 
 const kReasons = {
-  UNREACHABLE_REASON_SELF_OCCLUDED: "undercut by its own shape or its neighbours (LVM empty)",
+  UNREACHABLE_REASON_SELF_OCCLUDED: "undercut by its own shape (LVM(S) empty)",
+  UNREACHABLE_REASON_NEIGHBOR_OCCLUDED: "blocked by the faces beside it (LVM(S + N_S) empty)",
   UNREACHABLE_REASON_OCCLUDED: "occluded by the rest of the part",
   UNREACHABLE_REASON_VOID: "faces an internal void",
   UNREACHABLE_REASON_NOT_ALONG_NORMAL: "not reachable along its own normal",
@@ -103,8 +104,26 @@ export function partTable(part) {
     ["bounding box", `${direction(b.min)} – ${direction(b.max)}`],
     ["validation", part.validation || ""],
     ...(part.cadFaces ? [["STEP", `${part.cadFaces} B-rep faces, file unit ${part.fileUnit} (coordinates in mm), ` +
-      `tessellated at ${num(part.linearDeflection, 4)} mm and ${num(part.angularDeflectionDegrees, 1)}°`]] : []),
+      `tessellated at ${num(part.linearDeflection, 4)} mm and ${num(part.angularDeflectionDegrees, 1)}°`],
+      ["tessellation", tessellationText(part.stepTessellation || {})]] : []),
   ], "part");
+}
+
+// What the tessellation kept of the B-rep (the text report's line, gvm.v1.StepTessellation).
+export function tessellationText(t) {
+  if (!t.faithful) return "BRepMesh's triangles as they are (--brepmesh-only)";
+  const exp = (x) => Number(x || 0).toExponential(1);
+  let s = `faithful: ${(t.directions || []).length} B-rep directions kept exactly (within ${exp(t.maxDirectionAngleRadians)} rad ` +
+    `of the B-rep), ${t.ruledFaces || 0} ruled faces meshed along their rulings, points moved at most ` +
+    `${exp(t.maxNodeDisplacementMm)} mm`;
+  const inexact = t.inexact || [];
+  if (inexact.length) {
+    const worst = Math.max(...inexact.map((r) => r.distanceMm || 0));
+    s += `; ${inexact.length} relations kept within ${exp(worst)} mm only (where faces of two frames meet)`;
+  }
+  const left = t.brepmeshFaces || [];
+  if (left.length) s += `; ${left.length} faces as BRepMesh made them (face ${left[0].cadFace || 0}: ${left[0].reason})`;
+  return s;
 }
 
 export function timingTable(analysis, plan) {
