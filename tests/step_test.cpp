@@ -259,6 +259,50 @@ TEST(StepPlan, SmallPartsArePlanned) {
   }
 }
 
+// What a machinist expects of the shared parts, which BRepMesh's leaning facets denied: the
+// plate in two setups, +z with its top, sides and hole walls and -z with its bottom; every
+// hole wall of the L-bracket reached along its own axis; nothing of pmi1 unreachable (its
+// counterbores' steps and bores from the top).
+TEST(StepPlan, HoleWallsAreReachedAlongTheirAxes) {
+  auto plan_of = [](const char* file) {
+    AnalyzeRequest request;
+    request.part_path = step_path(file);
+    Analysis analysis = analyzed(request);
+    StatusOr<planner::SetupPlan> plan = planner::plan(analysis, {});
+    EXPECT_TRUE(plan.ok()) << plan.status().message();
+    return std::pair{std::move(analysis), std::move(*plan)};
+  };
+  {
+    auto [analysis, plan] = plan_of("bug3883_xr2-ct-214_plate.stp");
+    EXPECT_EQ(plan.message.unreachable_count(), 0u);
+    ASSERT_EQ(plan.directions.size(), 2u);
+    EXPECT_TRUE(plan.message.optimal());
+    for (const v1::PlannedSurface& s : plan.message.surfaces()) {
+      const CadFace& cad = *analysis.features()[s.id()].cad_face;
+      const auto u = plan.directions[s.setup()].unit();
+      const bool bottom = cad.type == CadSurfaceType::kPlane && (*cad.axis)[2] < -0.5;
+      EXPECT_EQ(u[2], bottom ? -1.0 : 1.0) << s.name();
+    }
+  }
+  {
+    auto [analysis, plan] = plan_of("bug3883_xr2-ct-214_l-bracket.stp");
+    EXPECT_EQ(plan.message.unreachable_count(), 0u);
+    for (const v1::PlannedSurface& s : plan.message.surfaces()) {
+      const CadFace& cad = *analysis.features()[s.id()].cad_face;
+      if (cad.type != CadSurfaceType::kCylinder) continue;
+      const auto u = plan.directions[s.setup()].unit();
+      const double along = u[0] * (*cad.axis)[0] + u[1] * (*cad.axis)[1] + u[2] * (*cad.axis)[2];
+      EXPECT_EQ(std::fabs(along), 1.0) << s.name();
+      // The wall's GVM is exactly its axis both ways.
+      EXPECT_EQ(analysis.features()[s.id()].maps.gvm->cells().size(), 2u) << s.name();
+    }
+  }
+  {
+    auto [analysis, plan] = plan_of("bug32745_pmi1.stp");
+    EXPECT_EQ(plan.message.unreachable_count(), 0u);
+  }
+}
+
 // The plate's six through holes are each two half-cylinders about a vertical axis.
 TEST(StepHoles, ThePlatesHolesAreFoundWithTheirAxes) {
   StepOptions options;

@@ -15,7 +15,6 @@
 //      did keep BRepMesh's triangles, those along a changed edge cut into fans.
 // A ruled face whose boundary does not allow rulings keeps BRepMesh's triangles, and the
 // report says which and why.
-#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
@@ -40,13 +39,12 @@ namespace gvm::step_internal {
 namespace {
 
 using faithful::IVec;
-using Polygons = std::vector<std::vector<uint32_t>>;
 
 constexpr int kInsertionRounds = 8;
 // Boundary points of a ruled face whose rulings lie closer than this share one ruling
 // (mm, relative to the linear deflection): BRepMesh puts the end points of neighbouring
 // edges at angles that differ in the last bits.
-constexpr double kRulingTolerance = 1e-6;
+constexpr double kRulingTolerance = 1e-6, kRulingCap = 1e-4;
 // A grid step is 2^-kGridBits of the part's largest coordinate.
 constexpr int kGridBits = 50;
 
@@ -97,103 +95,6 @@ std::vector<FaceInfo> classify(const TopTools_IndexedMapOfShape& faces, std::vec
   return out;
 }
 
-// The roots along each edge, before any point is added: what BRepMesh's triangles use.
-std::vector<std::vector<uint32_t>> chains(Weld& weld) {
-  std::vector<std::vector<uint32_t>> out(weld.edge_points.size());
-  for (size_t e = 0; e < out.size(); ++e)
-    for (uint32_t p : weld.edge_points[e]) out[e].push_back(weld.find(p));
-  return out;
-}
-
-// Adds the points on their edges in parameter order, noting which face asked for each;
-// how many were new.
-uint32_t insert(std::vector<EdgeInsertion>& insertions, Weld& weld, std::map<uint32_t, uint32_t>& asked_by) {
-  std::sort(insertions.begin(), insertions.end(),
-            [](const EdgeInsertion& a, const EdgeInsertion& b) { return std::tie(a.edge, a.parameter) < std::tie(b.edge, b.parameter); });
-  uint32_t added = 0;
-  std::unique_ptr<BRepAdaptor_Curve> curve;
-  int curve_edge = -1;
-  for (const EdgeInsertion& ins : insertions) {
-    std::vector<double>& params = weld.edge_params[ins.edge];
-    std::vector<uint32_t>& points = weld.edge_points[ins.edge];
-    const double range = std::fabs(params.back() - params.front());
-    auto it = std::lower_bound(params.begin(), params.end(), ins.parameter);
-    const double near = std::min(it == params.end() ? INFINITY : *it - ins.parameter,
-                                 it == params.begin() ? INFINITY : ins.parameter - *(it - 1));
-    if (near <= 1e-9 * range) continue;  // there already (the other face asked too)
-    if (curve_edge != ins.edge) {
-      curve = std::make_unique<BRepAdaptor_Curve>(TopoDS::Edge(weld.edges(ins.edge + 1)));
-      curve_edge = ins.edge;
-    }
-    const size_t at = size_t(it - params.begin());
-    params.insert(params.begin() + long(at), ins.parameter);
-    const uint32_t point = weld.add(curve->Value(ins.parameter));
-    points.insert(points.begin() + long(at), point);
-    asked_by[point] = ins.face;
-    ++added;
-  }
-  return added;
-}
-
-// For each consecutive pair of an edge's original points that got points between them:
-// those points, from the first of the pair to the second.
-using Splits = std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>>;
-
-Splits splits_of(const std::vector<std::vector<uint32_t>>& before, Weld& weld) {
-  Splits out;
-  for (size_t e = 0; e < before.size(); ++e) {
-    const std::vector<uint32_t>& old = before[e];
-    if (old.size() == weld.edge_points[e].size()) continue;
-    std::vector<uint32_t> now;
-    for (uint32_t p : weld.edge_points[e]) now.push_back(weld.find(p));
-    size_t j = 0;
-    for (size_t k = 0; k + 1 < old.size(); ++k) {
-      while (j < now.size() && now[j] != old[k]) ++j;
-      std::vector<uint32_t> inner;
-      for (size_t i = j + 1; i < now.size() && now[i] != old[k + 1]; ++i) inner.push_back(now[i]);
-      if (inner.empty() || old[k] == old[k + 1]) continue;
-      out[{old[k], old[k + 1]}] = inner;
-      std::reverse(inner.begin(), inner.end());
-      out[{old[k + 1], old[k]}] = std::move(inner);
-    }
-  }
-  return out;
-}
-
-// BRepMesh's triangles with every edge that got points cut into a fan from the opposite
-// corner.
-Polygons fan_split(const Polygons& triangles, const Splits& splits, Weld& weld) {
-  std::vector<std::array<uint32_t, 3>> work;
-  for (const auto& t : triangles) {
-    if (t.size() != 3) continue;
-    work.push_back({weld.find(t[0]), weld.find(t[1]), weld.find(t[2])});
-  }
-  Polygons out;
-  while (!work.empty()) {
-    const std::array<uint32_t, 3> t = work.back();
-    work.pop_back();
-    bool split = false;
-    for (int k = 0; k < 3 && !split; ++k) {
-      auto it = splits.find({t[k], t[(k + 1) % 3]});
-      if (it == splits.end()) continue;
-      const uint32_t apex = t[(k + 2) % 3];
-      uint32_t prev = t[k];
-      for (uint32_t m : it->second) work.push_back({prev, m, apex}), prev = m;
-      work.push_back({prev, t[(k + 1) % 3], apex});
-      split = true;
-    }
-    if (!split) out.push_back({t[0], t[1], t[2]});
-  }
-  return out;
-}
-
-bool touches_splits(const TopoDS_Face& face, const Weld& weld, const std::vector<std::vector<uint32_t>>& before) {
-  for (const auto& wire : face_wires(face, weld))
-    for (const EdgeUse& use : wire)
-      if (before[use.edge].size() != weld.edge_points[use.edge].size()) return true;
-  return false;
-}
-
 // What make_faithful changes, to start again from it.
 struct Snapshot {
   std::vector<std::vector<uint32_t>> edge_points;
@@ -242,19 +143,19 @@ class Faithful {
   const TopoDS_Face& face(uint32_t f) const { return TopoDS::Face(faces_(int(f) + 1)); }
 
   faithful::Placement attempt_once(std::map<uint32_t, std::string>& demote) {
-    before_ = chains(weld_);
+    before_ = edge_chains(weld_);
     asked_by_.clear();
     std::vector<EdgeInsertion> forced = forced_;
-    inserted_ = insert(forced, weld_, asked_by_);
+    inserted_ = insert_points(forced, weld_, asked_by_);
     mesh_ruled_faces();
     faithful::Placement placement = place();
+    merge_coincident(placement);
     triangulate_planes(placement, demote);
     return placement;
   }
 
   void finish(const faithful::Placement& placement) {
     split_other_faces();
-    merge_coincident(placement);
     report(placement);
   }
 
@@ -280,7 +181,7 @@ class Faithful {
           ruled_[f]->insertions(weld_, f, insertions);
           asked[f] = uint32_t(insertions.size() - before);
         }
-        added = insert(insertions, weld_, asked_by_);
+        added = insert_points(insertions, weld_, asked_by_);
         total += added;
         if (added == 0 || total > 2 * budget) break;
       }
@@ -306,7 +207,7 @@ class Faithful {
     ruled_.resize(n_);
     for (uint32_t f = 0; f < n_; ++f)
       if (info_[f].kind == Kind::kRuled && !demoted_.count(f))
-        ruled_[f] = std::make_unique<RuledFace>(face(f), weld_, kRulingTolerance * linear_);
+        ruled_[f] = std::make_unique<RuledFace>(face(f), weld_, kRulingTolerance * linear_, kRulingCap * linear_);
     add_ruling_points();
     stripped_.assign(n_, false);
     strip_failures_.clear();

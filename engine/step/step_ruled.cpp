@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "step/faithful/ruled_strips.h"
 
@@ -43,13 +44,20 @@ double u_speed(const TopoDS_Face& face) {
 
 }  // namespace
 
-RuledFace::RuledFace(const TopoDS_Face& face, const Weld& weld, double tolerance)
+RuledFace::RuledFace(const TopoDS_Face& face, const Weld& weld, double tolerance, double cap)
     : reversed_face_(face.Orientation() == TopAbs_REVERSED), wires_(face_wires(face, weld)) {
+  // A B-rep vertex sits off the curves it joins by up to its tolerance, so its ruling is
+  // only known to that: a ruling that close to it is its own (a point added beside the
+  // vertex would leave a needle in the neighbouring face), up to `cap`.
+  double at_vertex = tolerance;
+  for (TopExp_Explorer ex(face, TopAbs_VERTEX); ex.More(); ex.Next())
+    at_vertex = std::max(at_vertex, std::min(cap, 4 * BRep_Tool::Tolerance(TopoDS::Vertex(ex.Current()))));
   BRepAdaptor_Surface s(face, /*R=*/false);
   if (s.GetType() == GeomAbs_Cylinder) cylinder_ = s.Cylinder();
   else if (s.GetType() == GeomAbs_Cone) cone_ = s.Cone();
   const double speed = u_speed(face);
   tol_u_ = speed > 0 ? tolerance / speed : 0;
+  tol_vertex_u_ = speed > 0 ? at_vertex / speed : 0;
 }
 
 const BRepAdaptor_Curve& RuledFace::curve(const Weld& weld, int edge) const {
@@ -78,19 +86,26 @@ std::pair<double, double> RuledFace::uv_of_node(const Weld& weld, const EdgeUse&
 }
 
 void RuledFace::find_rulings(const Weld& weld) {
-  std::vector<double> us;
+  std::vector<std::pair<double, bool>> us;  // u, at a B-rep vertex
   for (const auto& wire : wires_)
     for (const EdgeUse& use : wire) {
       if (use.degenerated || use.pcurve.IsNull()) continue;
       const std::vector<double>& params = weld.edge_params[use.edge];
       for (uint32_t k = 0; k < params.size(); ++k)
-        if (!std::isnan(params[k])) us.push_back(uv_of_node(weld, use, k).first);
+        if (!std::isnan(params[k])) us.push_back({uv_of_node(weld, use, k).first, k == 0 || k + 1 == params.size()});
     }
   std::sort(us.begin(), us.end());
   rulings_.clear();
-  for (double u : us) {
-    if (!rulings_.empty() && u - rulings_.back().lo <= tol_u_) rulings_.back().hi = u;
-    else rulings_.push_back({u, u});
+  bool vertex = false;  // the last ruling holds a vertex
+  for (auto [u, at_vertex] : us) {
+    const double gap = rulings_.empty() ? INFINITY : u - rulings_.back().lo;
+    if (gap <= tol_u_ || ((vertex || at_vertex) && gap <= tol_vertex_u_)) {
+      rulings_.back().hi = u;
+      vertex = vertex || at_vertex;
+    } else {
+      rulings_.push_back({u, u});
+      vertex = at_vertex;
+    }
   }
 }
 

@@ -19,22 +19,17 @@
 #include <vector>
 
 #include "step/faithful/ruled_strips.h"
+#include "step/step_edge_points.h"
 #include "step/step_face_boundary.h"
 #include "step/step_internal.h"
 
 namespace gvm::step_internal {
 
-// A point to add on an edge, by the edge curve's parameter.
-struct EdgeInsertion {
-  int edge;
-  double parameter;
-  uint32_t face;  // whose rulings ask for it
-};
-
 class RuledFace {
  public:
-  // tolerance: mm; boundary points whose rulings are closer than that share one ruling.
-  RuledFace(const TopoDS_Face& face, const Weld& weld, double tolerance);
+  // tolerance: mm; boundary points whose rulings are closer than that share one ruling, and
+  // a B-rep vertex's ruling takes those within four times its tolerance (up to `cap`).
+  RuledFace(const TopoDS_Face& face, const Weld& weld, double tolerance, double cap);
 
   // Groups the u of the boundary points (as the edges are discretised now) into rulings.
   void find_rulings(const Weld& weld);
@@ -62,7 +57,7 @@ class RuledFace {
   std::optional<gp_Cone> cone_;
   std::vector<std::vector<EdgeUse>> wires_;
   mutable std::map<int, std::unique_ptr<BRepAdaptor_Curve>> curves_;
-  double tol_u_;
+  double tol_u_, tol_vertex_u_;
   std::vector<Cluster> rulings_;
 };
 

@@ -13,9 +13,10 @@
 //   - every point of the GVM and the middle of every arc: every ray must be free;
 //   - random directions inside a 2-cell of the GVM by at least the margin: every ray free;
 //   - random directions outside the GVM by at least the margin: some ray blocked;
-//   - a feature with an empty GVM: the points and arcs of its own faces' LVM(S), and
-//     directions inside its 2-cells by the margin, each blocked for some ray (else the
-//     engine calls unreachable what the B-rep shows reachable).
+//   - a feature with an empty GVM: the points and arcs of its own faces' LVM(S),
+//     directions inside its 2-cells by the margin, and the B-rep's own axis (both ways)
+//     or normal, each blocked for some ray (else the engine calls unreachable what the
+//     B-rep shows reachable).
 // The margin (default: the tessellation's angular deflection) covers how far the mesh's
 // facets turn from the B-rep's surfaces; points and arcs, which hold exactly in the mesh,
 // get none. A direction outside the GVM whose rays the samples all find free is counted
@@ -277,19 +278,27 @@ int check_part(const std::string& path, const Options& o, Counts& total) {
     }
     // An empty GVM: the directions its own faces allow must all be blocked on the B-rep
     // too, or the part is reachable where the engine says it is not (a false undercut).
+    // The B-rep's own candidates as well: a cylinder's or cone's axis both ways, a plane's
+    // normal (an own LVM the mesh made empty by facets that lean would offer none).
     if (f.maps.gvm->is_empty()) {
+      std::vector<Vec> candidates;
       const gvm::StatusOr<gvm::DirectionSet> own = analysis->own_lvm(f.faces);
       if (own.ok() && !own->is_empty()) {
         long ignored = 0;
-        std::vector<Vec> candidates = exact_cells(*own, margin, ignored, ignored);
+        candidates = exact_cells(*own, margin, ignored, ignored);
         for (int k = 0; k < 200 && candidates.size() < 12; ++k) {
           const Vec u = unit({g(rng), g(rng), g(rng)});
           if (own->approx_signed_clearance(u) >= margin) candidates.push_back(u);
         }
-        for (const Vec& u : candidates) {
-          ++c.unreachable;
-          if (free_from_all(u)) disagree("unreachable, but the B-rep sees it", u);
-        }
+      }
+      if (f.cad_face->axis) {
+        const Vec a = unit(*f.cad_face->axis);
+        candidates.push_back(a);
+        if (f.cad_face->type != gvm::CadSurfaceType::kPlane) candidates.push_back({-a[0], -a[1], -a[2]});
+      }
+      for (const Vec& u : candidates) {
+        ++c.unreachable;
+        if (free_from_all(u)) disagree("unreachable, but the B-rep sees it", u);
       }
     }
     int inside = 0, outside = 0;

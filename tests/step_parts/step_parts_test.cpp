@@ -29,7 +29,7 @@ struct Case {
   friend void PrintTo(const Case& c, std::ostream* os) { *os << name_of(c.part) << ", " << c.rotation_name; }
 };
 
-double angle(const Vec& a, const Vec& b) {
+double angle_between(const Vec& a, const Vec& b) {
   const double c = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   const Vec x = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
   return std::atan2(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), c);
@@ -77,7 +77,7 @@ class StepParts : public ::testing::TestWithParam<Case> {
     for (const Surface& f : analysis_->features()) {
       if (!f.cad_face || f.cad_face->type != type || !f.cad_face->axis) continue;
       const Vec a = local(*f.cad_face->axis);
-      if (std::min(angle(a, axis), angle(a, neg(axis))) > 1e-9) continue;
+      if (std::min(angle_between(a, axis), angle_between(a, neg(axis))) > 1e-9) continue;
       if (where && !where(local(*f.cad_face->location), f.cad_face->radius)) continue;
       out.push_back(&f);
     }
@@ -92,13 +92,13 @@ class StepParts : public ::testing::TestWithParam<Case> {
     for (const DirectionSet& c : cells) ASSERT_EQ(c.dimension(), 0) << s.name << ": " << s.maps.gvm->description();
     for (const Vec& e : expected) {
       double best = 10;
-      for (const DirectionSet& c : cells) best = std::min(best, angle(c.witness().unit(), e));
+      for (const DirectionSet& c : cells) best = std::min(best, angle_between(c.witness().unit(), e));
       EXPECT_LE(best, tolerance_) << s.name << ": " << s.maps.gvm->description();
     }
   }
 
   // u is in the set or within the frame distance of it.
-  bool reaches(const DirectionSet& set, const Vec& u) const { return angle(set.snap(u).unit(), u) <= tolerance_ + 1e-15; }
+  bool reaches(const DirectionSet& set, const Vec& u) const { return angle_between(set.snap(u).unit(), u) <= tolerance_ + 1e-15; }
 
   std::string bytes_;
   std::unique_ptr<Analysis> analysis_;
@@ -160,7 +160,7 @@ TEST_P(StepParts, HandDerivedMaps) {
       for (const DirectionSet& arc : gvm.cells()) {
         ASSERT_EQ(arc.dimension(), 1);
         // On the great circle normal to the walls, within the frame distance.
-        EXPECT_LE(std::fabs(M_PI / 2 - angle(arc.witness().unit(), R(kY))), tolerance_);
+        EXPECT_LE(std::fabs(M_PI / 2 - angle_between(arc.witness().unit(), R(kY))), tolerance_);
       }
       const auto walls = faces(CadSurfaceType::kPlane, kY, [](const Vec& p, double) {
         return std::fabs(p[1] - 11) < 1e-6 || std::fabs(p[1] - 19) < 1e-6;
@@ -206,6 +206,44 @@ TEST_P(StepParts, TheTessellationKeepsEveryRelation) {
   EXPECT_LE(t.max_direction_angle, generic ? 1e-7 : 1e-12);
   EXPECT_LT(t.max_node_displacement, (generic ? 1e-2 : 1e-9) * deflection);
   if (GetParam().part != Part::kThroughSlot) EXPECT_GT(t.ruled_faces, 0u);
+}
+
+// The relations hold at every deflection: a counterbore and a slot on oblique axes meshed
+// finely and coarsely keep their exact answers.
+TEST(StepPartsDeflection, TheRelationsHoldAtEveryDeflection) {
+  for (auto [linear, angle] : {std::pair{0.005, 5.0}, std::pair{0.5, 30.0}}) {
+    for (Part part : {Part::kCounterbore, Part::kThroughSlot}) {
+      SCOPED_TRACE(std::string(name_of(part)) + " at " + std::to_string(linear) + " mm, " + std::to_string(angle) + " deg");
+      const std::string bytes = step_bytes(part, kOblique);
+      AnalyzeRequest request;
+      request.part_bytes = bytes;
+      request.part_format = MeshFormat::kStep;
+      request.part_name = "part.stp";
+      request.options.mutable_step()->set_linear_deflection(linear);
+      request.options.mutable_step()->set_angular_deflection_degrees(angle);
+      auto a = analyze(request);
+      ASSERT_TRUE(a.ok()) << a.status().message();
+      const StepTessellation& t = a->part().tessellation;
+      EXPECT_TRUE(t.inexact.empty());
+      EXPECT_TRUE(t.brepmesh_faces.empty());
+      for (const Surface& f : a->features()) {
+        if (!f.cad_face || !f.maps.gvm) continue;
+        const Vec axis = unit(*f.cad_face->axis);
+        if (part == Part::kCounterbore && f.cad_face->type == CadSurfaceType::kCylinder) {
+          // The bore sees both ways, the counterbore only out of its opening: points all.
+          EXPECT_EQ(f.maps.gvm->dimension(), 0) << f.name;
+          for (const DirectionSet& c : f.maps.gvm->cells())
+            EXPECT_LE(std::min(angle_between(c.witness().unit(), axis), angle_between(c.witness().unit(), neg(axis))),
+                      t.max_direction_angle + 1e-12);
+        }
+      }
+      if (part == Part::kThroughSlot) {
+        int arcs = 0;
+        for (const Surface& f : a->features()) arcs += f.maps.gvm && f.maps.gvm->dimension() == 1;
+        EXPECT_EQ(arcs, 1);  // the floor's half circle
+      }
+    }
+  }
 }
 
 // The same check fails without the faithful tessellation: BRepMesh's facets of an oblique

@@ -16,7 +16,8 @@ using LD = long double;
 
 constexpr double kMaxAngle = 1e-7;     // a class's vector is never farther from it
 constexpr double kExactEnough = 1e-13; // a rational direction found: stop looking
-constexpr int64_t kFreeBound = int64_t(1) << 16;
+constexpr int64_t kFreeBound = int64_t(1) << 16, kFreeLimit = int64_t(1) << 20;
+constexpr double kFreeTarget = 9e-8;  // rad: a free direction searched beyond 2^16 only if not this close
 constexpr LD kPlaneBound = LD(int64_t(1) << 20);
 
 LD norm(const IVec& v) { return std::sqrt(LD(v.x) * v.x + LD(v.y) * v.y + LD(v.z) * v.z); }
@@ -113,18 +114,24 @@ IVec snap_free(const Dir3& d) {
   int dom = 0;
   for (int k = 1; k < 3; ++k)
     if (std::fabs(d[k]) > std::fabs(d[dom])) dom = k;
-  IVec best;
-  double best_angle = 10;
-  for (int64_t D = 1; D <= kFreeBound; ++D) {
-    int64_t c[3];
-    for (int k = 0; k < 3; ++k)
-      c[k] = k == dom ? (d[dom] < 0 ? -D : D) : std::llround(LD(D) * d[k] / std::fabs(LD(d[dom])));
-    const IVec v{c[0], c[1], c[2]};
-    const double angle = line_angle(v, d);
-    if (angle < best_angle) best = v, best_angle = angle;
-    if (angle <= kExactEnough) break;
+  const int a = (dom + 1) % 3, b = (dom + 2) % 3;
+  const LD ra = LD(d[a]) / std::fabs(LD(d[dom])), rb = LD(d[b]) / std::fabs(LD(d[dom]));
+  // The angle's square is about the components' squared misses over D^2: cheap to compare.
+  int64_t best_d = 1;
+  LD best_miss = 10;
+  for (int64_t D = 1; D <= kFreeLimit; ++D) {
+    const LD ma = LD(D) * ra - std::llround(LD(D) * ra), mb = LD(D) * rb - std::llround(LD(D) * rb);
+    const LD miss = (ma * ma + mb * mb) / (LD(D) * LD(D));
+    if (miss < best_miss) best_miss = miss, best_d = D;
+    if (best_miss <= kExactEnough * kExactEnough) break;
+    // Beyond 2^16 only while the best is not yet well within the bound.
+    if (D >= kFreeBound && best_miss <= kFreeTarget * kFreeTarget) break;
   }
-  return canonical(best);
+  int64_t c[3];
+  c[dom] = d[dom] < 0 ? -best_d : best_d;
+  c[a] = std::llround(LD(best_d) * LD(d[a]) / std::fabs(LD(d[dom])));
+  c[b] = std::llround(LD(best_d) * LD(d[b]) / std::fabs(LD(d[dom])));
+  return canonical({c[0], c[1], c[2]});
 }
 
 IVec snap_orthogonal(const Dir3& d, const IVec& a) {

@@ -59,8 +59,9 @@ double line_angle(const IVec& v, const Dir3& d);
 // A reduced basis of the lattice of integer vectors orthogonal to the primitive vector a.
 std::array<IVec, 2> orthogonal_lattice(const IVec& a);
 
-// Small integer vectors along d: the best found with components at most 2^16 (within about
-// 6e-8 rad: simultaneous approximation), or the first within 1e-13 rad.
+// Small integer vectors along d: the first within 1e-13 rad (a rational direction), else the
+// best with components at most 2^16 (typically within 6e-8 rad), or, when that is not within
+// 9e-8 rad, the best up to 2^20: larger vectors make coarser lattices, so only when needed.
 IVec snap_free(const Dir3& d);
 // The integer vector orthogonal to a that is closest to d among those of norm at most 2^20
 // (d nearly orthogonal to a): a two-dimensional approximation, usually within 1e-10 rad.

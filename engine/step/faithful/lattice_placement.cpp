@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 
 #include "sphere/union_find.h"
 
@@ -19,6 +20,23 @@ constexpr int kNoFrame = -1;
 constexpr uint32_t kNoAnchor = UINT32_MAX;
 
 LD ldot(const IVec& a, const LVec& t) { return LD(a.x) * t[0] + LD(a.y) * t[1] + LD(a.z) * t[2]; }
+
+// The nearest integer of a long double beyond int64 (the long double's 64 bits, exactly).
+i128 round_to_i128(LD v) {
+  const LD whole = std::round(v);
+  const bool negative = whole < 0;
+  LD a = negative ? -whole : whole;
+  const LD high = std::floor(std::ldexp(a, -64));
+  const i128 out = (i128(uint64_t(high)) << 64) + i128(uint64_t(a - std::ldexp(high, 64)));
+  return negative ? -out : out;
+}
+
+// 0, 1 or 2 for a coordinate axis (canonical vectors are positive), else -1.
+int coordinate_axis(const IVec& c) {
+  for (int k = 0; k < 3; ++k)
+    if (c[k] == 1 && c[(k + 1) % 3] == 0 && c[(k + 2) % 3] == 0) return k;
+  return -1;
+}
 
 int slot_of(const Frame& f, const IVec& v) {
   for (int k = 0; k < 3; ++k)
@@ -124,35 +142,168 @@ class Solver {
   // twice (a cycle of meetings) keeps its first anchor; the second point is a miss.
   void choose_anchors() {
     anchor_.assign(p_.rulings.size(), kNoAnchor);
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> meets(p_.rulings.size());  // (ruling, point)
+    meets_.assign(p_.rulings.size(), {});
     for (uint32_t q = 0; q < n_; ++q) {
       const std::vector<uint32_t>& rs = at_[q].rulings;
       for (size_t i = 0; i < rs.size(); ++i)
-        for (size_t j = i + 1; j < rs.size(); ++j)
-          if (ruling_frame_[rs[i]] != ruling_frame_[rs[j]]) {
-            meets[rs[i]].push_back({rs[j], q});
-            meets[rs[j]].push_back({rs[i], q});
-          }
+        for (size_t j = i + 1; j < rs.size(); ++j) {
+          const bool cross = ruling_frame_[rs[i]] != ruling_frame_[rs[j]];
+          meets_[rs[i]].push_back({rs[j], q, cross});
+          meets_[rs[j]].push_back({rs[i], q, cross});
+        }
     }
+    reached_.assign(p_.rulings.size(), false);
     std::vector<bool> seen(p_.rulings.size(), false);
     std::vector<uint32_t> roots(p_.rulings.size());
     std::iota(roots.begin(), roots.end(), 0u);
     // Roots on the lowest frame first (the coordinate frame's lattice is the finest).
     std::stable_sort(roots.begin(), roots.end(), [&](uint32_t a, uint32_t b) { return ruling_frame_[a] < ruling_frame_[b]; });
     for (uint32_t root : roots) {
-      if (seen[root] || meets[root].empty()) continue;
+      if (seen[root] || std::none_of(meets_[root].begin(), meets_[root].end(), [](const Meet& m) { return m.cross; }))
+        continue;
+      std::vector<uint32_t> component = {root};  // joined by meetings across frames
       seen[root] = true;
-      std::vector<uint32_t> queue = {root};
-      for (size_t k = 0; k < queue.size(); ++k)
-        for (auto [next, q] : meets[queue[k]]) {
-          if (seen[next]) continue;
-          seen[next] = true;
-          frame_[q] = ruling_frame_[queue[k]];
-          anchor_[next] = q;
-          anchored_order_.push_back(next);
-          queue.push_back(next);
-        }
+      for (size_t k = 0; k < component.size(); ++k)
+        for (const Meet& m : meets_[component[k]])
+          if (m.cross && !seen[m.other]) seen[m.other] = true, component.push_back(m.other);
+      if (cross_exactly(component)) {
+        for (uint32_t r : component) reached_[r] = true;
+        walk(crossings_.back().oblique_rulings);
+      } else if (!reached_[root]) {
+        reached_[root] = true;
+        walk({root});
+      }
     }
+  }
+
+  // Anchors every ruling reached from `queue`, at the point it was reached by: across frames
+  // from any ruling, within a frame only from an anchored one (two rulings on one frame's
+  // lattice meet exactly already).
+  void walk(std::vector<uint32_t> queue) {
+    for (size_t k = 0; k < queue.size(); ++k) {
+      const uint32_t r = queue[k];
+      for (const Meet& m : meets_[r]) {
+        if (reached_[m.other] || (!m.cross && anchor_[r] == kNoAnchor)) continue;
+        reached_[m.other] = true;
+        if (!crossing_point_.count(m.point)) frame_[m.point] = ruling_frame_[r];
+        anchor_[m.other] = m.point;
+        anchored_order_.push_back(m.other);
+        queue.push_back(m.other);
+      }
+    }
+  }
+
+  // Rulings along a coordinate axis e_k meeting rulings of one class c in a coordinate plane
+  // (c . e_j = 0, e_j in c's frame: an oblique hole in the xz plane breaking into a bore
+  // along z) can all meet exactly, however many times (a through cross hole meets each
+  // ruling twice): in the plane x_j = S of a meeting, the e_k ruling is x_m = X and c's is
+  // w . p = L (w its frame's third axis, w_j = 0), which meet at a grid point iff
+  // L = w_m X (mod w_k). So the meeting rulings share S, every X of the component is put in
+  // one residue class mod w_k (a move of at most |w_k| / 2 grid steps), and each L in the
+  // class that follows; c's rulings are then lines through their meeting points. False
+  // when the component is not of that form, or planes fix two X in different classes.
+  bool cross_exactly(const std::vector<uint32_t>& component) {
+    Crossing x;
+    for (uint32_t r : component) {
+      if (reached_[r]) return false;  // anchored already, from another component
+      const int axis = ruling_frame_[r] == 0 ? coordinate_axis(vec(p_.rulings[r].cls)) : -1;
+      if (axis >= 0) {
+        if (x.k >= 0 && x.k != axis) return false;
+        x.k = axis, x.axis_rulings.push_back(r);
+      } else {
+        if (!x.oblique_rulings.empty() && p_.rulings[x.oblique_rulings[0]].cls != p_.rulings[r].cls) return false;
+        x.oblique_rulings.push_back(r);
+      }
+    }
+    if (x.k < 0 || x.oblique_rulings.empty()) return false;
+    const uint32_t first = x.oblique_rulings[0];
+    const Frame& f = dirs_.frames[ruling_frame_[first]];
+    const IVec& c = vec(p_.rulings[first].cls);
+    for (int j = 0; j < 3 && x.j < 0; ++j) {
+      if (j == x.k || c[j] != 0) continue;
+      const IVec e = j == 0 ? IVec{1, 0, 0} : (j == 1 ? IVec{0, 1, 0} : IVec{0, 0, 1});
+      if (slot_of(f, e) < 0) continue;
+      x.j = j, x.m = 3 - j - x.k;
+      for (const IVec& a : f.axis)
+        if (a != c && a != e) x.w = a;
+    }
+    if (x.j < 0 || x.w[x.k] == 0) return false;
+    for (uint32_t r : x.oblique_rulings)
+      for (const Meet& m : meets_[r])
+        if (m.cross && std::find(x.axis_rulings.begin(), x.axis_rulings.end(), m.other) == x.axis_rulings.end())
+          return false;
+    for (uint32_t r : x.oblique_rulings)
+      for (const Meet& m : meets_[r]) {
+        if (!m.cross) continue;
+        frame_[m.point] = 0;
+        crossing_point_[m.point] = {uint32_t(crossings_.size()), r};
+        if (anchor_[r] == kNoAnchor) anchor_[r] = m.point, anchored_order_.push_back(r);
+      }
+    crossings_.push_back(std::move(x));
+    return true;
+  }
+
+  // The meeting rulings of a crossing share their coordinate along e_j.
+  void unite_crossings() {
+    for (const Crossing& x : crossings_)
+      for (uint32_t r : x.oblique_rulings) {
+        uint32_t previous = UINT32_MAX;
+        for (const Meet& m : meets_[r]) {
+          if (!m.cross) continue;
+          if (previous != UINT32_MAX) uf_.unite(ruling_var(previous, x.j), ruling_var(m.other, x.j));
+          previous = m.other;
+        }
+      }
+  }
+
+  // After the values: every X of a crossing in one residue class, each L in the class that
+  // follows.
+  void settle_crossings() {
+    for (Crossing& x : crossings_) {
+      const int64_t mod = std::llabs(x.w[x.k]);
+      std::optional<int64_t> fixed;
+      for (uint32_t r : x.axis_rulings) {
+        const uint32_t root = uf_.find(ruling_var(r, x.m));
+        if (!plane_roots_.count(root)) continue;
+        const int64_t residue = int64_t(((value_.at(root) % mod) + mod) % mod);
+        if (fixed && *fixed != residue) x.settled = false;
+        fixed = residue;
+      }
+      if (!x.settled) continue;
+      x.residue = fixed ? *fixed : int64_t(((value_.at(uf_.find(ruling_var(x.axis_rulings[0], x.m))) % mod) + mod) % mod);
+      for (uint32_t r : x.axis_rulings) {
+        i128& v = value_.at(uf_.find(ruling_var(r, x.m)));
+        v = nearest_in_class(v, x.residue, mod);
+      }
+      for (uint32_t r : x.oblique_rulings) {
+        LD sum = 0;
+        for (uint32_t q : p_.rulings[r].points) sum += ldot(x.w, target_[q]);
+        const i128 want = round_to_i128(sum / LD(p_.rulings[r].points.size()));  // about 2^70
+        line_[r] = nearest_in_class(want, i128(x.w[x.m]) * x.residue % mod, mod);
+      }
+    }
+  }
+
+  static i128 nearest_in_class(i128 v, i128 residue, int64_t mod) {
+    residue = ((residue % mod) + mod) % mod;
+    const i128 base = v - ((v % mod) + mod) % mod + residue;
+    i128 best = base;
+    for (i128 c : {base - mod, base + mod})
+      if ((c > v ? c - v : v - c) < (best > v ? best - v : v - best)) best = c;
+    return best;
+  }
+
+  // A meeting point of a settled crossing: x_m and x_j from the axis ruling, x_k where the
+  // oblique ruling's line crosses.
+  std::optional<IVec> crossing_position(uint32_t q) {
+    auto it = crossing_point_.find(q);
+    if (it == crossing_point_.end() || !crossings_[it->second.first].settled) return std::nullopt;
+    const Crossing& x = crossings_[it->second.first];
+    int64_t c[3];
+    c[x.m] = int64_t(value_.at(uf_.find(point_var(q, x.m))));
+    c[x.j] = int64_t(value_.at(uf_.find(point_var(q, x.j))));
+    c[x.k] = int64_t((line_.at(it->second.second) - i128(x.w[x.m]) * c[x.m]) / x.w[x.k]);
+    return IVec{c[0], c[1], c[2]};
   }
 
   void place_along_anchor(uint32_t r, std::vector<IVec>& grid) {
@@ -160,7 +311,7 @@ class Solver {
     const IVec a = grid[anchor_[r]];
     const LD cc = LD(dot(c, c));
     for (uint32_t q : p_.rulings[r].points) {
-      if (q == anchor_[r]) continue;
+      if (q == anchor_[r] || crossing_position(q)) continue;  // on its line already
       LD t = ldot(c, {target_[q][0] - a.x, target_[q][1] - a.y, target_[q][2] - a.z}) / cc;
       for (uint32_t pl : at_[q].planes)
         if (vec(p_.planes[pl].cls) == c) t = (LD(value_.at(uf_.find(plane_var(pl))) * dot(c, c)) - LD(dot(c, a))) / cc;
@@ -169,6 +320,7 @@ class Solver {
   }
 
   void unite() {
+    unite_crossings();
     for (uint32_t f = 0; f < p_.planes.size(); ++f)
       for (uint32_t q : p_.planes[f].points) {
         const int k = frame_[q] == kNoFrame ? -1 : slot_of(dirs_.frames[frame_[q]], vec(p_.planes[f].cls));
@@ -226,8 +378,11 @@ class Solver {
         ++it->second.count;
       }
     }
-    for (auto& [root, a] : acc)
+    for (auto& [root, a] : acc) {
       value_[root] = a.plane ? *a.plane : i128(std::llround(a.count ? a.sum / a.count : 0));
+      if (a.plane) plane_roots_.insert(root);
+    }
+    settle_crossings();
   }
 
   std::optional<i128> fixed(uint32_t q, int k) {
@@ -259,6 +414,7 @@ class Solver {
   }
 
   IVec position(uint32_t q) {
+    if (auto p = crossing_position(q)) return *p;
     const LVec& t = target_[q];
     if (frame_[q] == kNoFrame) return rounded(t);
     const Frame& fr = dirs_.frames[frame_[q]];
@@ -308,10 +464,12 @@ class Solver {
           if (fr.axis[k] != c) anchor = anchor + int64_t(value_.at(uf_.find(ruling_var(r, k)))) * fr.axis[k];
       Miss m{p_.rulings[r].face, true, 0, 0};
       for (uint32_t q : p_.rulings[r].points) {
-        const IVec off = cross(out.grid[q] - anchor, c);
-        if (off.is_zero()) continue;
+        const IVec d = out.grid[q] - anchor;  // d x c exactly: up to 2^53 times 2^41
+        const i128 x = i128(d.y) * c.z - i128(d.z) * c.y, y = i128(d.z) * c.x - i128(d.x) * c.z,
+                   z = i128(d.x) * c.y - i128(d.y) * c.x;
+        if (x == 0 && y == 0 && z == 0) continue;
         ++m.points;
-        const LD len = std::sqrt(LD(off.x) * off.x + LD(off.y) * off.y + LD(off.z) * off.z);
+        const LD len = std::sqrt(LD(x) * LD(x) + LD(y) * LD(y) + LD(z) * LD(z));
         m.distance_mm = std::max(m.distance_mm, double(len / std::sqrt(LD(dot(c, c))) * unit));
       }
       if (m.points) out.misses.push_back(m);
@@ -327,6 +485,23 @@ class Solver {
   std::vector<int> ruling_frame_, frame_;
   std::vector<uint32_t> anchor_;  // per ruling: the point it is anchored at, or kNoAnchor
   std::vector<uint32_t> anchored_order_;
+  struct Meet {
+    uint32_t other, point;
+    bool cross;  // the other ruling is of another frame
+  };
+  std::vector<std::vector<Meet>> meets_;  // per ruling
+  std::vector<bool> reached_;
+  struct Crossing {
+    std::vector<uint32_t> axis_rulings, oblique_rulings;
+    int k = -1, j = -1, m = -1;  // the axis, the shared coordinate, the third
+    IVec w;                      // the oblique frame's axis in the plane of e_k and e_m
+    int64_t residue = 0;
+    bool settled = true;
+  };
+  std::vector<Crossing> crossings_;
+  std::map<uint32_t, std::pair<uint32_t, uint32_t>> crossing_point_;  // point -> (crossing, oblique ruling)
+  std::map<uint32_t, i128> line_;                                     // oblique ruling -> w . p on it
+  std::set<uint32_t> plane_roots_;
   std::map<uint32_t, i128> value_;
   std::map<std::array<int64_t, 3>, std::array<IVec, 2>> basis_;
 };
