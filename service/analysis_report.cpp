@@ -55,8 +55,10 @@ std::string step_line(const v1::PartSummary& part) {
 std::string tessellation_text(const v1::StepTessellation& t) {
   if (!t.faithful()) return "BRepMesh's triangles as they are (--brepmesh-only)";
   std::ostringstream s;
-  s << "faithful: " << t.directions_size() << " B-rep directions kept exactly (within " << std::setprecision(2)
-    << t.max_direction_angle_radians() << " rad of the B-rep), " << t.ruled_faces()
+  s << "faithful: " << t.directions_size() << " B-rep directions kept exactly (" << std::setprecision(2);
+  if (t.max_direction_angle_radians() == 0) s << "as the B-rep gives them";
+  else s << "within " << t.max_direction_angle_radians() << " rad of the B-rep's";
+  s << "), " << t.ruled_faces()
     << " ruled faces meshed along their rulings, points moved at most " << t.max_node_displacement_mm() << " mm";
   if (t.inexact_size() > 0) {
     double worst = 0;

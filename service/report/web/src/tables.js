@@ -113,8 +113,9 @@ export function partTable(part) {
 export function tessellationText(t) {
   if (!t.faithful) return "BRepMesh's triangles as they are (--brepmesh-only)";
   const exp = (x) => Number(x || 0).toExponential(1);
-  let s = `faithful: ${(t.directions || []).length} B-rep directions kept exactly (within ${exp(t.maxDirectionAngleRadians)} rad ` +
-    `of the B-rep), ${t.ruledFaces || 0} ruled faces meshed along their rulings, points moved at most ` +
+  const within = t.maxDirectionAngleRadians ? `within ${exp(t.maxDirectionAngleRadians)} rad of the B-rep's` : "as the B-rep gives them";
+  let s = `faithful: ${(t.directions || []).length} B-rep directions kept exactly (${within}), ` +
+    `${t.ruledFaces || 0} ruled faces meshed along their rulings, points moved at most ` +
     `${exp(t.maxNodeDisplacementMm)} mm`;
   const inexact = t.inexact || [];
   if (inexact.length) {
