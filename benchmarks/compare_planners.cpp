@@ -48,7 +48,7 @@ void sample(const gvm::Analysis& analysis, size_t n, gvm::v1::PlannerRun& row) {
   std::vector<gvm::planner::Target> reachable;
   for (const gvm::Surface& f : analysis.features()) {
     if (f.maps.gvm && !f.maps.gvm->is_empty()) {
-      reachable.push_back({static_cast<uint32_t>(reachable.size()), {}, *f.maps.gvm, *f.maps.gvm, *f.maps.gvm});
+      reachable.push_back({static_cast<uint32_t>(reachable.size()), {}, 0, *f.maps.gvm, *f.maps.gvm, *f.maps.gvm});
     }
   }
   const std::vector<gvm::Direction> lattice = gvm::planner::fibonacci_directions(n);

@@ -13,6 +13,7 @@
 #include "candidates.h"
 #include "gvm/v1/plan.pb.h"
 #include "targets.h"
+#include "tolerance.h"
 
 namespace gvm::planner {
 
@@ -24,6 +25,9 @@ struct TargetReach {
   // Rotary mode: table angles (degrees) reaching it, and the one chosen.
   std::vector<std::array<double, 2>> rotary_angles;
   double rotary_angle_degrees = 0;
+  // Reached only within the plan's tolerance, this far (radians, doubles) from its reach set.
+  bool within_tolerance = false;
+  double distance_radians = 0;
 };
 
 struct PlacedSetup {
@@ -50,13 +54,29 @@ class Mode {
   // planner may find them round by round (exact_cover.h) instead of all at once.
   virtual bool exact() const { return false; }
   virtual CandidateSet candidates(std::span<const Target> targets) const = 0;
+  // When the candidates are every setup there is (a head's grid): them again, each with
+  // the targets it serves within the tolerance, so that the solver's bound over them holds.
+  // Otherwise nothing: the planner adds the reach sets' corners (tolerance.h).
+  virtual std::optional<CandidateSet> candidates_within(std::span<const Target>, const Tolerance&) const {
+    return std::nullopt;
+  }
   // Whether a setup at `direction` serves the target (what the candidates were built on).
   virtual bool serves(const Target& target, const Direction& direction) const {
     return target.reach.contains(direction);
   }
+  // Whether a setup at `direction` serves the target within the tolerance, exactly; it
+  // must imply that `direction` is within epsilon of the target's reach set.
+  virtual bool serves_within(const Target& target, const Direction& direction, const Tolerance& tolerance) const {
+    return target.reach.within(direction, tolerance.near_sin2);
+  }
   // Places a chosen candidate that serves every assigned target.
   virtual PlacedSetup place(const Candidate& chosen, std::span<const Target> targets,
                             std::span<const uint32_t> assigned) const = 0;
+  // The same without moving it: the candidate serves the assigned targets; `loose` ones
+  // only within the tolerance (clearance 0; the rotary mode says at which table angle the
+  // tool comes nearest).
+  virtual PlacedSetup place_fixed(const Candidate& chosen, std::span<const Target> targets,
+                                  std::span<const uint32_t> assigned, std::span<const uint32_t> loose) const;
   virtual Unserved unserved(const Target& target) const = 0;
 };
 

@@ -1,5 +1,6 @@
 // Plan options: checked field by field, and completed with the defaults of each mode.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "gvm/planner/plan.h"
@@ -8,6 +9,10 @@ namespace gvm::planner {
 namespace {
 
 constexpr double kDefaultCone = 5;  // the usual conical tolerance of CMM probing
+// Above the tilt that single-precision STL coordinates give a facet (~1e-7 rad), well below
+// any machine's indexing resolution (~1e-5 rad).
+constexpr double kDefaultTolerance = 1e-6;
+constexpr double kMaxTolerance = 0.017453292519943295;  // one degree: rounding, not a clearance
 
 bool finite_at_least(double x, double lo) { return std::isfinite(x) && x >= lo; }
 
@@ -76,6 +81,13 @@ Status validate(const v1::PlanOptions& o) {
   if (o.threads() > 1024) {
     return InvalidArgument("threads: " + std::to_string(o.threads()) + " is more than 1024");
   }
+  if (o.has_tolerance_radians() &&
+      !(finite_at_least(o.tolerance_radians(), 0) && o.tolerance_radians() <= kMaxTolerance)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%.6g", o.tolerance_radians());
+    return InvalidArgument(std::string("tolerance_radians: ") + value +
+                           " must be at least 0 and at most 0.0174533 (one degree)");
+  }
   const bool probe = o.mode() == v1::PLAN_MODE_PROBE;
   const bool setup = o.mode() == v1::PLAN_MODE_SETUP || o.mode() == v1::PLAN_MODE_UNSPECIFIED;
   if (o.min_clearance_degrees() != 0) {
@@ -98,6 +110,7 @@ v1::PlanOptions with_defaults(const v1::PlanOptions& options) {
   v1::PlanOptions o = options;
   if (o.mode() == v1::PLAN_MODE_UNSPECIFIED) o.set_mode(v1::PLAN_MODE_SETUP);
   if (o.surfaces() == v1::PLAN_SURFACES_UNSPECIFIED) o.set_surfaces(v1::PLAN_SURFACES_FEATURES);
+  if (!o.has_tolerance_radians()) o.set_tolerance_radians(kDefaultTolerance);
   if (o.mode() != v1::PLAN_MODE_PROBE) return o;
   if (!o.has_head()) {
     v1::ProbeHead* h = o.mutable_head();

@@ -38,6 +38,13 @@ std::unique_ptr<Mode> make_mode(const v1::PlanOptions& o) {
   }
 }
 
+// Automatic features up to this many faces are split by default (PlanOptions.split_max_faces).
+constexpr uint32_t kDefaultSplitMaxFaces = 20000;
+
+uint32_t split_max_faces(const v1::PlanOptions& o) {
+  return o.has_split_max_faces() ? o.split_max_faces() : kDefaultSplitMaxFaces;
+}
+
 class Planner {
  public:
   // Runs in a task of `ctx`, which a stop request cancels: its parallel loops then stop
@@ -50,12 +57,13 @@ class Planner {
     state_.analysis = &analysis;
     state_.options = options;
     state_.surfaces = planned_surfaces(analysis, options);
+    state_.tolerance = Tolerance::of(options.tolerance_radians());
   }
 
   StatusOr<SetupPlan> run() {
     const auto t0 = Clock::now();
     collect_targets();
-    if (state_.options.split() && !split_unreachable()) return cancelled();
+    if (!split_unreachable()) return cancelled();
     if (!keep_going("candidates", 0, 1)) return cancelled();
     Status covered = cover();
     if (!covered.ok()) return covered;
@@ -98,48 +106,122 @@ class Planner {
         state_.unreachable.emplace_back(i, reason_of_empty_reach(s, normal_only));
         continue;
       }
-      state_.targets.push_back({i, {}, *s.maps.gvm, directions, mode_->reach_of(directions)});
+      state_.targets.push_back({i, {}, 0, *s.maps.gvm, directions, mode_->reach_of(directions)});
     }
   }
 
-  // --split: the pieces of each unreachable surface become targets of their own (their
-  // maps computed in parallel, kept in piece order).
+  // Pieces of unreachable surfaces become targets of their own (their maps computed in
+  // parallel, kept in piece order). A piece of an automatic feature that the rest of the
+  // part occludes whole is cut again, along its seeds' normals.
   bool split_unreachable() {
     const auto t0 = Clock::now();
     const bool normal_only = state_.options.planar_normal();
     for (size_t k = 0; k < state_.unreachable.size(); ++k) {
       UnreachableSurface& u = state_.unreachable[k];
       if (!keep_going("split", k, state_.unreachable.size())) return false;
-      if (u.reason == v1::UNREACHABLE_REASON_VOID || u.reason == v1::UNREACHABLE_REASON_GVM_NOT_COMPUTED) continue;
-      const std::vector<std::vector<uint32_t>> pieces = state_.analysis->planar_pieces(state_.surfaces[u.surface]->faces);
-      if (pieces.size() < 2) continue;
-      std::vector<std::optional<Surface>> maps(pieces.size());
-      tbb::parallel_for(size_t{0}, pieces.size(), [&](size_t i) {
-        StatusOr<Surface> piece = state_.analysis->surface_of(pieces[i]);
-        if (piece.ok()) maps[i] = std::move(*piece);  // the faces come from the part: only a cancel fails
-      });
+      std::vector<std::vector<uint32_t>> pieces = pieces_of(u);
+      if (pieces.size() < 2) {
+        u.split_by_direction = false;
+        continue;
+      }
+      std::vector<std::optional<Surface>> maps = maps_of(pieces);
+      if (u.split_by_direction) recut_occluded(pieces, maps);
       if (!keep_going("split", k, state_.unreachable.size())) return false;  // pieces left undone
+      u.pieces = static_cast<uint32_t>(pieces.size());
       for (size_t i = 0; i < pieces.size(); ++i) {
         if (!maps[i]) continue;
         const Surface& piece = *maps[i];
         const DirectionSet directions =
             piece.maps.gvm ? tool_directions(*piece.maps.gvm, piece.planar_normal, normal_only) : DirectionSet();
         if (directions.is_empty()) {
-          u.pieces_unreachable.push_back({pieces[i], reason_of_empty_reach(piece, normal_only)});
+          u.pieces_unreachable.push_back({pieces[i], piece_reason(piece, normal_only)});
           continue;
         }
-        state_.targets.push_back({u.surface, pieces[i], *piece.maps.gvm, directions, mode_->reach_of(directions)});
+        state_.targets.push_back({u.surface, pieces[i], static_cast<uint32_t>(i + 1), *piece.maps.gvm, directions,
+                                  mode_->reach_of(directions)});
       }
     }
     state_.times.unreachable += seconds_since(t0);
     return true;
   }
 
-  Status cover() {
-    const auto t0 = Clock::now();
+  std::vector<std::optional<Surface>> maps_of(const std::vector<std::vector<uint32_t>>& pieces) const {
+    std::vector<std::optional<Surface>> maps(pieces.size());
+    tbb::parallel_for(size_t{0}, pieces.size(), [&](size_t i) {
+      StatusOr<Surface> piece = state_.analysis->surface_of(pieces[i]);
+      if (piece.ok()) maps[i] = std::move(*piece);  // the faces come from the part: only a cancel fails
+    });
+    return maps;
+  }
+
+  // Pieces with a direction of their own (LVM(S + N_S)) that the rest of the part takes
+  // away (an empty GVM) replaced by their pieces along their seeds' normals, when that
+  // cuts them.
+  void recut_occluded(std::vector<std::vector<uint32_t>>& pieces, std::vector<std::optional<Surface>>& maps) const {
+    std::vector<std::vector<uint32_t>> out_pieces;
+    std::vector<std::optional<Surface>> out_maps;
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      const bool occluded = maps[i] && maps[i]->maps.gvm && maps[i]->maps.gvm->is_empty() && !maps[i]->maps.lvm.is_empty();
+      std::vector<std::vector<uint32_t>> cut;
+      if (occluded && pieces[i].size() > 1) cut = state_.analysis->visible_pieces(pieces[i], Analysis::Growth::kAlongSeedNormal);
+      if (cut.size() < 2) {
+        out_pieces.push_back(std::move(pieces[i]));
+        out_maps.push_back(std::move(maps[i]));
+        continue;
+      }
+      std::vector<std::optional<Surface>> cut_maps = maps_of(cut);
+      for (size_t j = 0; j < cut.size(); ++j) {
+        out_pieces.push_back(std::move(cut[j]));
+        out_maps.push_back(std::move(cut_maps[j]));
+      }
+    }
+    pieces = std::move(out_pieces);
+    maps = std::move(out_maps);
+  }
+
+  // An automatic feature whose own faces have no common direction: in pieces that have one
+  // (unless --no-split). With --split, any other unreachable surface: in its planar pieces.
+  std::vector<std::vector<uint32_t>> pieces_of(UnreachableSurface& u) const {
+    if (u.reason == v1::UNREACHABLE_REASON_VOID || u.reason == v1::UNREACHABLE_REASON_GVM_NOT_COMPUTED) return {};
+    const Surface& s = *state_.surfaces[u.surface];
+    if (!state_.options.no_split() && s.automatic && u.reason == v1::UNREACHABLE_REASON_SELF_OCCLUDED) {
+      if (const uint32_t limit = split_max_faces(state_.options); limit > 0 && s.faces.size() > limit) {
+        u.split_limit = limit;
+        return {};
+      }
+      const StatusOr<DirectionSet> own = state_.analysis->own_lvm(s.faces);
+      if (own.ok() && own->is_empty()) {
+        u.split_by_direction = true;
+        return state_.analysis->visible_pieces(s.faces);
+      }
+    }
+    if (!state_.options.split()) return {};
+    return state_.analysis->planar_pieces(s.faces);
+  }
+
+  // A piece's own faces may have a direction that its neighbours take away.
+  v1::UnreachableReason piece_reason(const Surface& piece, bool normal_only) const {
+    const v1::UnreachableReason r = reason_of_empty_reach(piece, normal_only);
+    if (r != v1::UNREACHABLE_REASON_SELF_OCCLUDED) return r;
+    const StatusOr<DirectionSet> own = state_.analysis->own_lvm(piece.faces);
+    return own.ok() && !own->is_empty() ? v1::UNREACHABLE_REASON_NEIGHBOR_OCCLUDED : r;
+  }
+
+  CoverOptions cover_options() {
     CoverOptions options;
     options.time_limit_seconds = state_.options.time_limit_seconds();
     options.cancelled = [this] { return !keep_going("set cover", 0, 1); };
+    return options;
+  }
+
+  Status cover() {
+    if (Status s = cover_exactly(); !s.ok() || !state_.tolerance.active()) return s;
+    return cover_within();
+  }
+
+  Status cover_exactly() {
+    const auto t0 = Clock::now();
+    const CoverOptions options = cover_options();
     if (mode_->exact()) {
       auto serves = [this](uint32_t t, const Direction& d) { return mode_->serves(state_.targets[t], d); };
       StatusOr<ExactCover> exact = exact_cover(state_.targets, serves, options);
@@ -172,6 +254,45 @@ class Planner {
     spdlog::debug("plan: {} targets, {} candidates, cover of {} (bound {})", state_.targets.size(),
                   state_.candidates.candidates.size(), state_.cover.chosen.size(), state_.cover.lower_bound);
     return Status::Ok();
+  }
+
+  // Again within the tolerance, from the exact plan's candidates: the exact count is kept
+  // for the message.
+  Status cover_within() {
+    const auto t0 = Clock::now();
+    state_.exact = ExactCount{static_cast<uint32_t>(state_.cover.chosen.size()), state_.cover.lower_bound};
+    state_.continuous_lower_bound.reset();  // the optimum without a clearance requirement, but exactly
+    const CoverOptions options = cover_options();
+    auto within = [this](uint32_t t, const Direction& d) {
+      return mode_->serves_within(state_.targets[t], d, state_.tolerance);
+    };
+    if (std::optional<CandidateSet> all = mode_->candidates_within(state_.targets, state_.tolerance)) {
+      StatusOr<CoverSolution> solution = solve_set_cover(problem(all->candidates), options);
+      if (!solution.ok()) return solution.status();
+      if (solution->cancelled || stopped_) return cancelled();
+      state_.candidates = std::move(*all);
+      state_.cover = std::move(*solution);
+    } else {
+      StatusOr<ToleranceCover> c = tolerance_cover(state_.targets, state_.candidates, within, state_.tolerance, options);
+      if (!c.ok()) return c.status();
+      if (c->solution.cancelled || stopped_) return cancelled();
+      c->candidates.description = "every direction within the tolerance (candidates: " +
+                                  std::to_string(state_.candidates.candidates.size()) + " exact witnesses, " +
+                                  std::to_string(c->corners) + " corners of the reach sets and " +
+                                  std::to_string(c->midpoints) +
+                                  " midpoints, each tested within it)";
+      state_.candidates = std::move(c->candidates);
+      state_.cover = std::move(c->solution);
+      state_.candidate_lower_bound = c->candidate_lower_bound;
+      state_.bound_by_covers = c->bound_by_covers;
+    }
+    state_.times.cover += seconds_since(t0);
+    return Status::Ok();
+  }
+
+  // Whether a setup at d serves the target as this plan decides it.
+  bool serves(const Target& t, const Direction& d) const {
+    return state_.tolerance.active() ? mode_->serves_within(t, d, state_.tolerance) : mode_->serves(t, d);
   }
 
   CoverProblem problem(const std::vector<Candidate>& candidates) const {
@@ -242,8 +363,25 @@ class Planner {
         state_.setups[k] = PlacedSetup{};
         return;
       }
-      state_.setups[k] = mode_->place(setups[k].first, state_.targets, setups[k].second);
+      state_.setups[k] = place_one(setups[k].first, setups[k].second);
     });
+  }
+
+  // A setup whose direction some target is reached from only within the tolerance stays
+  // where it is (a move could take it farther); the others are placed by the mode.
+  PlacedSetup place_one(const Candidate& chosen, const std::vector<uint32_t>& assigned) const {
+    std::vector<uint32_t> exact, loose;
+    for (uint32_t t : assigned) (mode_->serves(state_.targets[t], chosen.direction) ? exact : loose).push_back(t);
+    if (loose.empty()) return mode_->place(chosen, state_.targets, assigned);
+    PlacedSetup p = mode_->place_fixed(chosen, state_.targets, exact, loose);
+    for (TargetReach& r : p.reach) {
+      if (std::find(loose.begin(), loose.end(), r.target) == loose.end()) continue;
+      r.within_tolerance = true;
+      r.exact_alignment = true;
+      r.distance_radians = std::max(0.0, -state_.targets[r.target].reach.approx_signed_clearance(p.direction.unit()));
+    }
+    std::sort(p.reach.begin(), p.reach.end(), [](const TargetReach& a, const TargetReach& b) { return a.target < b.target; });
+    return p;
   }
 
   // (target, from, to): targets with more clearance in another placed setup that serves
@@ -258,7 +396,7 @@ class Planner {
         double room = target.reach.approx_signed_clearance(state_.setups[from].direction.unit());
         for (size_t k = 0; k < setups.size(); ++k) {
           const double r = target.reach.approx_signed_clearance(state_.setups[k].direction.unit());
-          if (k != from && r > room && mode_->serves(target, state_.setups[k].direction)) best = k, room = r;
+          if (k != from && r > room && serves(target, state_.setups[k].direction)) best = k, room = r;
         }
         if (best != from) out.emplace_back(t, from, best);
       }
@@ -284,6 +422,14 @@ class Planner {
         if (!state_.targets[r.target].faces.empty()) ++unreachable_of(state_.targets[r.target].surface).pieces_reached;
       }
     }
+    // Surfaces every piece of which is reached are reached, piece by piece.
+    std::erase_if(state_.unreachable, [this](const UnreachableSurface& u) {
+      const bool reached = u.pieces > 0 && u.pieces_unreachable.empty() && u.pieces_reached == u.pieces;
+      if (reached) state_.split.push_back({u.surface, u.pieces});
+      return reached;
+    });
+    std::sort(state_.split.begin(), state_.split.end(),
+              [](const SplitSurface& a, const SplitSurface& b) { return a.surface < b.surface; });
     std::sort(state_.unreachable.begin(), state_.unreachable.end(),
               [](const UnreachableSurface& a, const UnreachableSurface& b) { return a.surface < b.surface; });
     if (!keep_going("reasons", 0, state_.unreachable.size())) return false;

@@ -45,6 +45,11 @@ void fill_setup(const PlanState& s, const PlacedSetup& placed, v1::Setup* out) {
       a->set_to_degrees(to);
     }
     f->set_rotary_angle_degrees(r.rotary_angle_degrees);
+    if (r.within_tolerance) {
+      f->set_within_tolerance(true);
+      f->set_distance_radians(r.distance_radians);
+    }
+    if (t.piece > 0) f->set_piece(t.piece);
     clearance = std::min(clearance, r.clearance_degrees);
     if (r.exact_alignment) out->set_exact_alignment(true);
   }
@@ -53,6 +58,40 @@ void fill_setup(const PlanState& s, const PlacedSetup& placed, v1::Setup* out) {
   out->set_head_a_degrees(placed.head_a_degrees);
   out->set_head_b_degrees(placed.head_b_degrees);
   if (placed.rotary_zero) to_proto(*placed.rotary_zero, out->mutable_rotary_zero());
+}
+
+// Surfaces planned piece by piece: how many pieces, and the setups that reach them.
+void fill_pieces(const PlanState& s, v1::Plan& out) {
+  for (const SplitSurface& split : s.split) {
+    out.mutable_surfaces(static_cast<int>(split.surface))->mutable_pieces()->set_count(split.pieces);
+  }
+  for (const UnreachableSurface& u : s.unreachable) {
+    if (u.pieces > 0) out.mutable_surfaces(static_cast<int>(u.surface))->mutable_pieces()->set_count(u.pieces);
+  }
+  for (size_t k = 0; k < s.setups.size(); ++k) {
+    for (const TargetReach& r : s.setups[k].reach) {
+      const Target& t = s.targets[r.target];
+      if (t.faces.empty()) continue;
+      auto* setups = out.mutable_surfaces(static_cast<int>(t.surface))->mutable_pieces()->mutable_setups();
+      if (setups->empty() || setups->at(setups->size() - 1) != static_cast<int32_t>(k)) setups->Add(static_cast<int32_t>(k));
+    }
+  }
+}
+
+void fill_tolerance(const PlanState& s, v1::Plan& out) {
+  if (!s.tolerance.active()) {
+    out.mutable_options()->clear_tolerance_radians();  // an exact plan reads as before
+    return;
+  }
+  v1::PlanTolerance* t = out.mutable_tolerance();
+  t->set_radians(s.tolerance.radians);
+  t->set_exact_setups(s.exact ? s.exact->setups : 0);
+  t->set_exact_lower_bound(s.exact ? s.exact->lower_bound : 0);
+  uint32_t within = 0;
+  for (const PlacedSetup& p : s.setups) {
+    for (const TargetReach& r : p.reach) within += r.within_tolerance;
+  }
+  t->set_reached_within(within);
 }
 
 void fill_unreachable(const PlanState& s, const UnreachableSurface& u, v1::Unreachable* out) {
@@ -72,9 +111,21 @@ void fill_unreachable(const PlanState& s, const UnreachableSurface& u, v1::Unrea
   }
 }
 
+std::string solver_text(const PlanState& s) {
+  const CoverSolution& c = s.cover;
+  const std::string solver = c.solver_ran ? "COIN-OR Cbc 2.10 (greedy warm start)" : "greedy";
+  if (!s.candidate_lower_bound) return c.solver_ran ? solver : solver + ", proven by the packing bound";
+  const std::string bound = s.bound_by_covers
+                                ? "the exact optimum over certified covers of the sets' tolerance neighbourhoods"
+                                : "the packing bound";
+  if (s.setups.size() == c.lower_bound) return solver + ", proven by " + bound;
+  return solver + "; bound " + std::to_string(*s.candidate_lower_bound) + " over the candidates, " +
+         std::to_string(c.lower_bound) + " over every direction by " + bound;
+}
+
 void fill_solver(const PlanState& s, v1::SolverStatistics* out) {
   const CoverSolution& c = s.cover;
-  out->set_solver(c.solver_ran ? "COIN-OR Cbc 2.10 (greedy warm start)" : "greedy, proven by the packing bound");
+  out->set_solver(solver_text(s));
   out->set_candidate_set(s.candidates.description);
   out->set_candidates(s.candidates.evaluated);
   out->set_maximal_candidates(static_cast<uint32_t>(s.candidates.candidates.size()));
@@ -115,14 +166,17 @@ v1::Plan plan_message(const PlanState& s) {
     }
   }
   fill_surfaces(s, setup_of, out);
+  fill_pieces(s, out);
   for (const UnreachableSurface& u : s.unreachable) fill_unreachable(s, u, out.add_unreachable());
   // Setups that served nothing were dropped, which can only meet the bound sooner.
   out.set_lower_bound(s.cover.lower_bound);
   out.set_optimal(s.cover.lower_bound == s.setups.size());
   for (uint32_t t : s.cover.packing) out.add_lower_bound_witness(s.surfaces[s.targets[t].surface]->id);
-  out.set_reached(static_cast<uint32_t>(std::count_if(setup_of.begin(), setup_of.end(), [](int32_t k) { return k >= 0; })));
+  out.set_reached(static_cast<uint32_t>(std::count_if(setup_of.begin(), setup_of.end(), [](int32_t k) { return k >= 0; }) +
+                                        s.split.size()));
   out.set_unreachable_count(static_cast<uint32_t>(s.unreachable.size()));
   fill_solver(s, out.mutable_solver());
+  fill_tolerance(s, out);
   fill_timing(s, out.mutable_timing());
   out.set_engine_version(GVM_VERSION);
   return out;

@@ -23,7 +23,10 @@ struct UnreachableSurface {
   std::vector<uint32_t> blocking_features;
   std::optional<Direction> probed_direction;
   Unserved nearest;                       // probe cone or clearance: the best candidate
-  // --split
+  // Planned piece by piece (split): how many pieces, which reached and which not.
+  uint32_t pieces = 0;
+  bool split_by_direction = false;        // an automatic feature split where its normals part
+  uint32_t split_limit = 0;               // not split: more faces than this
   uint32_t pieces_reached = 0;
   std::vector<std::pair<std::vector<uint32_t>, v1::UnreachableReason>> pieces_unreachable;
 };
@@ -33,12 +36,30 @@ struct PlanTimes {
   uint32_t threads = 0;
 };
 
+// The exact plan's count (tolerance 0), when the plan has a tolerance.
+struct ExactCount {
+  uint32_t setups = 0, lower_bound = 0;
+};
+
+// A surface every piece of which some setup reaches.
+struct SplitSurface {
+  uint32_t surface = 0;
+  uint32_t pieces = 0;
+};
+
 struct PlanState {
   const Analysis* analysis = nullptr;
   v1::PlanOptions options;                // defaults filled in
   std::vector<const Surface*> surfaces;   // planned surfaces
   std::vector<Target> targets;
   std::vector<UnreachableSurface> unreachable;
+  std::vector<SplitSurface> split;        // reached piece by piece
+  Tolerance tolerance;
+  std::optional<ExactCount> exact;        // with a tolerance
+  // With a tolerance, over candidates that are not every setup there is: the solver's
+  // bound over them (the plan's lower bound is then the separated packing, tolerance.h).
+  std::optional<uint32_t> candidate_lower_bound;
+  bool bound_by_covers = false;           // ... and then the optimum over the dilations' covers
   CandidateSet candidates;
   CoverSolution cover;
   std::optional<uint32_t> continuous_lower_bound;

@@ -20,6 +20,7 @@ std::vector<const Surface*> planned_surfaces(const Analysis& analysis, const v1:
 struct Target {
   uint32_t surface = 0;           // index into the planned surfaces
   std::vector<uint32_t> faces;    // a piece's input faces; empty for the whole surface
+  uint32_t piece = 0;             // a piece's number among its surface's pieces, from 1
   DirectionSet gvm;               // GVM of the surface or piece
   // The tool directions that reach it: the GVM, or with --planar-normal its own normal
   // when the GVM holds it.

@@ -64,6 +64,15 @@ void explain_empty_lvm(const Analysis& analysis, const Surface& s, UnreachableSu
                "empty): blocked by " + feature_list(analysis, out.blocking_features);
 }
 
+std::string reason_words(v1::UnreachableReason r) {
+  switch (r) {
+    case v1::UNREACHABLE_REASON_NEIGHBOR_OCCLUDED: return "blocked by the faces beside it (LVM(S + N_S) is empty)";
+    case v1::UNREACHABLE_REASON_OCCLUDED: return "occluded by the rest of the part (its GVM is empty)";
+    case v1::UNREACHABLE_REASON_NOT_ALONG_NORMAL: return "not reachable along its normal";
+    default: return "unreachable";
+  }
+}
+
 }  // namespace
 
 v1::UnreachableReason reason_of_empty_reach(const Surface& s, bool planar_normal_only) {
@@ -76,6 +85,14 @@ v1::UnreachableReason reason_of_empty_reach(const Surface& s, bool planar_normal
 }
 
 void explain(const Analysis& analysis, const Surface& s, UnreachableSurface& out) {
+  if (out.split_by_direction && !out.pieces_unreachable.empty()) {
+    // What is said is why the pieces left are unreachable: the feature's own shape was
+    // answered by the split.
+    out.reason = out.pieces_unreachable.front().second;
+    out.detail = "no one direction sees all of its faces (LVM(S) is empty), so it was planned in " +
+                 std::to_string(out.pieces) + " pieces that each have one; a piece left is " + reason_words(out.reason);
+    return;
+  }
   switch (out.reason) {
     case v1::UNREACHABLE_REASON_VOID:
       out.detail = "faces of an internal void: never visible from outside";
@@ -85,6 +102,10 @@ void explain(const Analysis& analysis, const Surface& s, UnreachableSurface& out
       return;
     case v1::UNREACHABLE_REASON_SELF_OCCLUDED:
       explain_empty_lvm(analysis, s, out);
+      if (out.split_limit > 0) {
+        out.detail += "; not split into pieces: " + std::to_string(s.faces.size()) + " faces, more than " +
+                      std::to_string(out.split_limit) + " (--split-max-faces)";
+      }
       return;
     case v1::UNREACHABLE_REASON_NOT_ALONG_NORMAL:
       out.detail = "its GVM (" + s.maps.gvm->description() + ") does not contain its own normal " +

@@ -86,6 +86,18 @@ void add_step_options(CLI::App& command, v1::StepOptions& step) {
   });
   command.add_flag_callback("--group-holes", [&step] { step.set_group_holes(true); });
   command.add_flag_callback("--brepmesh-only", [&step] { step.set_brepmesh_only(true); });
+  add_value(command, "--step-memory", "MB", "a whole number of MiB, at least 64", [&step](const std::string& v) {
+    double mb = 0;
+    if (!parse_number(v, mb) || !(mb >= 64 && mb <= 4194304) || mb != std::floor(mb)) return false;
+    step.set_reader_memory_mb(static_cast<uint32_t>(mb));
+    return true;
+  });
+  add_value(command, "--step-seconds", "SEC", "a number of seconds > 0", [&step](const std::string& v) {
+    double s = 0;
+    if (!parse_number(v, s) || !(s > 0 && std::isfinite(s))) return false;
+    step.set_reader_seconds(s);
+    return true;
+  });
 }
 
 }  // namespace

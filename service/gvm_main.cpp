@@ -59,6 +59,10 @@ Options of both commands:
   --brepmesh-only      STEP: BRepMesh's triangles as they are, without the faithful
                        tessellation (which keeps the B-rep's normals and axes
                        exactly: hole walls parallel to their axes); to compare
+  --step-memory MB     STEP: the address space of the process that reads the file
+                       (default 1 GiB + 256 x the file's size, at least 2 GiB)
+  --step-seconds SEC   STEP: its CPU time (default 600); a crash, a loop or a file
+                       over these limits fails this part only
   --threads N          worker threads (default: all cores)
   --method M           how the occlusion by O_S is computed: eme (effective
                        Minkowski envelope, the default) or convex (union of
@@ -85,8 +89,15 @@ plan options:
                        hull features too)
   --planar-normal      a planar feature is reached only along its own normal
                        (a flat-end tool facing it, a probe touching it square)
-  --split              plan an unreachable feature piece by piece (its coplanar
-                       connected pieces): "machinable in two setups"
+  --tolerance ANGLE    a feature is reached along u when u is within ANGLE of its
+                       GVM, decided exactly (radians, or degrees as 0.001deg;
+                       default 1e-6: above the rounding of float STL facets,
+                       below any machine's resolution); 0: exact plans
+  --no-split           keep automatic features whole (by default one that no
+                       single direction sees, its own faces having no common
+                       direction, is planned in pieces that each have one)
+  --split              also plan every other unreachable feature piece by piece
+                       (its coplanar connected pieces): "machinable in two setups"
   --time-limit SEC     stop the exact set cover after SEC seconds and report the
                        best plan with its gap to the lower bound
   --min-clearance DEG  setup mode: a direction serves a feature only with this

@@ -79,6 +79,22 @@ bool read_surfaces(const std::string& text, v1::PlanOptions& o) {
   return true;
 }
 
+// "1e-6" or "1e-6rad" in radians, "0.001deg" in degrees.
+bool parse_angle_radians(const std::string& text, double& out) {
+  std::string number = text;
+  double scale = 1;
+  for (const auto& [suffix, factor] : {std::pair<std::string, double>{"deg", M_PI / 180}, {"rad", 1.0}}) {
+    if (number.size() > suffix.size() && number.compare(number.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      number.resize(number.size() - suffix.size());
+      scale = factor;
+      break;
+    }
+  }
+  if (!finite_number(number, out)) return false;
+  out *= scale;
+  return true;
+}
+
 // Adds a finite number option whose value `set` stores; the planner checks its range.
 void add_finite(CLI::App& plan, const std::string& name, const std::string& meta, const std::string& needs,
                 std::function<void(double)> set) {
@@ -97,6 +113,20 @@ void add_plan_choices(CLI::App& plan, v1::PlanOptions& o) {
   plan.add_flag_callback("--concave-only", [&o] { o.set_concave_only(true); });
   plan.add_flag_callback("--planar-normal", [&o] { o.set_planar_normal(true); });
   plan.add_flag_callback("--split", [&o] { o.set_split(true); });
+  plan.add_flag_callback("--no-split", [&o] { o.set_no_split(true); });
+  add_value(plan, "--split-max-faces", "N", "a whole number of faces (0: no limit)", [&o](const std::string& v) {
+    double x = 0;
+    if (!finite_number(v, x) || x < 0 || x > 4294967295.0 || x != std::floor(x)) return false;
+    o.set_split_max_faces(static_cast<uint32_t>(x));
+    return true;
+  });
+  add_value(plan, "--tolerance", "ANGLE", "an angle in radians, or in degrees with 'deg' (1e-6, 0.001deg)",
+            [&o](const std::string& v) {
+              double x = 0;
+              if (!parse_angle_radians(v, x)) return false;
+              o.set_tolerance_radians(x);
+              return true;
+            });
   add_finite(plan, "--time-limit", "SEC", "a number of seconds", [&o](double x) { o.set_time_limit_seconds(x); });
   add_finite(plan, "--min-clearance", "DEG", "an angle in degrees", [&o](double x) { o.set_min_clearance_degrees(x); });
 }
@@ -122,7 +152,7 @@ std::string with_flag_names(const std::string& message) {
   static const std::pair<const char*, const char*> kFlags[] = {
       {"head", "--head"}, {"part_up", "--part-up"}, {"cone_degrees", "--cone"},
       {"min_clearance_degrees", "--min-clearance"}, {"time_limit_seconds", "--time-limit"},
-      {"threads", "--threads"}, {"mode", "--mode"}};
+      {"threads", "--threads"}, {"mode", "--mode"}, {"tolerance_radians", "--tolerance"}};
   for (const auto& [field, flag] : kFlags) {
     if (message.rfind(field, 0) == 0) return std::string(flag) + " (" + field + ")" + message.substr(std::string(field).size());
   }

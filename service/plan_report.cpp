@@ -65,8 +65,8 @@ class Names {
   std::map<uint32_t, std::string> name_;
 };
 
-// "F1 F2 F5" with pieces as "F7[faces 3,4]" and flags for exact alignment, wrapped
-// after `width` characters onto lines indented by `indent`.
+// "F1 F2 F5" with pieces as "F7[piece 2]" and flags for exact alignment and reach within
+// the tolerance, wrapped after `width` characters onto lines indented by `indent`.
 std::string reach_list(const v1::Setup& s, const Names& name, size_t width, size_t indent) {
   std::string out;
   size_t line = 0;
@@ -79,7 +79,9 @@ std::string reach_list(const v1::Setup& s, const Names& name, size_t width, size
       out += " ";
     }
     out += name(r.feature());
-    if (r.faces_size() > 0) {
+    if (r.has_piece()) {
+      out += "[piece " + std::to_string(r.piece()) + "]";
+    } else if (r.faces_size() > 0) {
       out += "[faces";
       for (int i = 0; i < r.faces_size(); ++i) {
         out += i ? "," : " ";
@@ -87,7 +89,25 @@ std::string reach_list(const v1::Setup& s, const Names& name, size_t width, size
       }
       out += "]";
     }
-    if (r.exact_alignment()) out += "*";
+    out += r.within_tolerance() ? "~" : r.exact_alignment() ? "*" : "";
+  }
+  return out;
+}
+
+bool any_within(const v1::Plan& p) {
+  for (const v1::Setup& s : p.setups()) {
+    for (const v1::SetupFeature& r : s.reach()) {
+      if (r.within_tolerance()) return true;
+    }
+  }
+  return false;
+}
+
+std::string setup_list(const std::vector<int>& setups) {
+  std::string out = setups.size() == 1 ? "setup " : "setups ";
+  for (size_t i = 0; i < setups.size(); ++i) {
+    out += i == 0 ? "" : i + 1 == setups.size() ? " and " : ", ";
+    out += std::to_string(setups[i] + 1);
   }
   return out;
 }
@@ -95,7 +115,8 @@ std::string reach_list(const v1::Setup& s, const Names& name, size_t width, size
 void print_setups(const v1::Plan& p, const Names& name, std::ostream& out) {
   const bool rotary = p.mode() == v1::PLAN_MODE_ROTARY, probe = p.mode() == v1::PLAN_MODE_PROBE;
   out << "  #  " << (rotary ? "rotary axis" : "direction u") << "                  clearance  "
-      << (probe ? "head A, B       " : "") << "surfaces (* = needs exact alignment)\n";
+      << (probe ? "head A, B       " : "") << "surfaces (* = needs exact alignment"
+      << (any_within(p) ? ", ~ = reached within the tolerance" : "") << ")\n";
   for (int k = 0; k < p.setups_size(); ++k) {
     const v1::Setup& s = p.setups(k);
     out << format("%3.0f", k + 1.0) << "  " << vec(s.direction()) << "  " << format("%7.2f", s.clearance_degrees())
@@ -110,6 +131,40 @@ void print_setups(const v1::Plan& p, const Names& name, std::ostream& out) {
       out << "\n";
     }
   }
+}
+
+// What the tolerance did: the surfaces reached only within it, and how far off.
+void print_within(const v1::Plan& p, const Names& name, std::ostream& out) {
+  if (!any_within(p)) return;
+  out << "\nReached within the tolerance (" << format("%g", p.tolerance().radians()) << " rad), off their GVM by:";
+  size_t line = 0;
+  std::string text;
+  for (int k = 0; k < p.setups_size(); ++k) {
+    for (const v1::SetupFeature& r : p.setups(k).reach()) {
+      if (!r.within_tolerance()) continue;
+      std::string item = " " + name(r.feature()) + (r.has_piece() ? "[piece " + std::to_string(r.piece()) + "]" : "") +
+                         " " + format("%.2g", r.distance_radians()) + " (setup " + std::to_string(k + 1) + ")";
+      if (text.size() - line + item.size() > 88) text += "\n ", line = text.size();
+      text += item;
+    }
+  }
+  out << "\n " << text << "\n";
+}
+
+// Surfaces planned piece by piece, and in which setups.
+void print_pieces(const v1::Plan& p, const Names& name, std::ostream& out) {
+  std::map<uint32_t, int> unreached;  // pieces left unreachable, by surface
+  for (const v1::Unreachable& u : p.unreachable()) unreached[u.feature()] = u.pieces_unreachable_size();
+  std::string text;
+  for (const v1::PlannedSurface& s : p.surfaces()) {
+    if (!s.has_pieces() || s.pieces().setups_size() == 0) continue;
+    const uint32_t count = s.pieces().count(), left = static_cast<uint32_t>(unreached[s.id()]);
+    text += "  " + name(s.id()) + " (" + std::to_string(s.face_count()) + " faces, " + std::to_string(count) +
+            " pieces): " + (left > 0 ? std::to_string(count - left) + " machinable in " : "machinable in ") +
+            setup_list({s.pieces().setups().begin(), s.pieces().setups().end()}) +
+            (left > 0 ? ", " + std::to_string(left) + " unreachable" : "") + "\n";
+  }
+  if (!text.empty()) out << "\nPlanned piece by piece:\n" << text;
 }
 
 void print_unreachable(const v1::Plan& p, const Names& name, std::ostream& out) {
@@ -127,20 +182,29 @@ void print_unreachable(const v1::Plan& p, const Names& name, std::ostream& out) 
 void print_proof(const v1::Plan& p, const Names& name, std::ostream& out) {
   const v1::SolverStatistics& s = p.solver();
   out << "\nOptimality: ";
+  const std::string within = p.has_tolerance() ? " within the tolerance" : "";
   if (p.optimal()) {
-    out << "proven - no plan has fewer than " << p.lower_bound() << " setup(s)";
+    out << "proven - no plan has fewer than " << p.lower_bound() << " setup(s)" << within;
   } else {
-    out << "not proven - lower bound " << p.lower_bound() << ", gap " << (p.setups_size() - int(p.lower_bound()));
+    out << "not proven - lower bound " << p.lower_bound() << within << ", gap " << (p.setups_size() - int(p.lower_bound()));
     if (s.time_limit_reached()) out << " (time limit reached)";
   }
   out << "\n  over " << s.candidate_set() << "\n  " << s.solver() << "; greedy " << s.greedy_setups()
       << ", packing bound " << s.packing_bound();
   if (p.lower_bound_witness_size() > 0 && s.packing_bound() == p.lower_bound()) {
-    out << " (pairwise without a common direction:";
+    out << (p.has_tolerance() ? " (reach sets pairwise more than twice the tolerance apart:"
+                              : " (pairwise without a common direction:");
     for (uint32_t id : p.lower_bound_witness()) out << " " << name(id);
     out << ")";
   }
   out << "\n";
+  if (p.has_tolerance() && p.tolerance().exact_setups() != static_cast<uint32_t>(p.setups_size())) {
+    const v1::PlanTolerance& t = p.tolerance();
+    out << "  exactly (tolerance 0): " << t.exact_setups() << " setup(s), "
+        << (t.exact_setups() == t.exact_lower_bound() ? std::string("proven")
+                                                      : "lower bound " + std::to_string(t.exact_lower_bound()))
+        << "\n";
+  }
   if (s.continuous_lower_bound() > 0) {
     out << "  without the clearance requirement " << s.continuous_lower_bound()
         << " setup(s) suffice: a lower bound over every direction\n";
@@ -160,8 +224,15 @@ void print_plan(const v1::Plan& p, std::ostream& out) {
       << (p.options().planar_normal() ? ", planar ones along their normal only" : "") << "; "
       << p.reached() << " reached, " << p.unreachable_count() << " unreachable\n"
       << "Directions u are those along which rays leave the surface; the tool approaches along -u.\n\n"
-      << "Setups: " << p.setups_size() << "\n";
+      << "Setups: " << p.setups_size();
+  if (p.has_tolerance() && p.tolerance().exact_setups() != static_cast<uint32_t>(p.setups_size())) {
+    out << " within " << format("%g", p.tolerance().radians()) << " rad; " << p.tolerance().exact_setups()
+        << " exactly";
+  }
+  out << "\n";
   print_setups(p, name, out);
+  print_within(p, name, out);
+  print_pieces(p, name, out);
   print_unreachable(p, name, out);
   print_proof(p, name, out);
   const v1::PlanTiming& t = p.timing();

@@ -241,7 +241,8 @@ TEST(MachinedBlockRegions, TwoSetups) {
 
 // The floors of the pocket and of the hole as one feature: together they could only be
 // seen along +z (LVM(S + N_S) = {+z}), where the hole's ceiling blocks them. Unreachable
-// whole, the ceiling named; with --split each floor in its own setup.
+// whole, the ceiling named; with --split each floor in its own setup, and the feature
+// reached piece by piece.
 TEST(MachinedBlockSplit, TwoFloorsAsOneFeatureArePlannedPieceByPiece) {
   const Block b(0, {"pocket_floor", "hole_floor"});
   const uint32_t merged = b.feature("merged").id;
@@ -258,9 +259,11 @@ TEST(MachinedBlockSplit, TwoFloorsAsOneFeatureArePlannedPieceByPiece) {
   v1::PlanOptions options;
   options.set_split(true);
   const planner::SetupPlan split = plan(b, options);
-  ASSERT_EQ(split.message.unreachable_size(), 1);
-  EXPECT_EQ(split.message.unreachable(0).pieces_reached(), 2u);
-  EXPECT_EQ(split.message.unreachable(0).pieces_unreachable_size(), 0);
+  EXPECT_EQ(split.message.unreachable_size(), 0);
+  const v1::PlannedSurface& planned = split.message.surfaces(static_cast<int>(merged));
+  ASSERT_EQ(planned.id(), merged);
+  EXPECT_EQ(planned.pieces().count(), 2u);
+  EXPECT_EQ(planned.pieces().setups_size(), 2);
   int pieces = 0;
   for (int k = 0; k < split.message.setups_size(); ++k) {
     for (const auto& r : split.message.setups(k).reach()) {

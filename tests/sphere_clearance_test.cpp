@@ -1,7 +1,9 @@
 // Caps in closed sets and clearances: the exact angle predicates against GMP rationals,
 // contains_cap against an independent long-double distance (sampling and refinement along
 // every arc) away from ties and at exact ties, the approximate clearance against the
-// same distances, and the quarter splits of arcs.
+// same distances, and the quarter splits of arcs. The planner's tolerance (nearness.h):
+// a set within theta of a direction and of another set, against the same distances and
+// at exact ties.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -14,6 +16,7 @@
 #include "exact/exact_vec.h"
 #include "sphere/clearance.h"
 #include "sphere/local_visibility_map.h"
+#include "sphere/nearness.h"
 #include "sphere/set_operations.h"
 #include "sphere_random_images.h"
 
@@ -347,6 +350,137 @@ TEST(SphereClearance, ApproximateSignedClearance) {
       ASSERT_NEAR(value, double(expected), 1e-9) << u[0] << " " << u[1] << " " << u[2];
     }
   }
+}
+
+// --- nearness: the planner's tolerance ---
+
+// The long-double distance from u to the set (0 inside).
+long double distance_to_set(const SphericalImage& set, const D3& u) {
+  if (set.contains(ev(u))) return 0;
+  const L3 ul = unit_l(u);
+  long double d = kPiL;
+  for (const Face& f : set.faces()) d = std::min(d, distance_to_face_boundary(ul, f));
+  for (const Arc& a : set.curves()) d = std::min(d, distance_to_arc(ul, a));
+  for (const ExactVec& p : set.points()) d = std::min(d, angle_l(ul, unit_l(p)));
+  return d;
+}
+
+TEST(SphereNearness, WithinAngleAgainstLongDoubleDistances) {
+  constexpr uint64_t kBaseSeed = 6021;
+  int near = 0, far = 0;
+  for (uint64_t s = 0; s < 200; ++s) {
+    std::mt19937_64 rng(kBaseSeed + s);
+    const SphericalImage set = s % 3 == 0 ? testing::random_image(rng) : random_face_set(rng);
+    if (set.is_full_sphere() || set.is_empty()) continue;
+    std::normal_distribution<double> g;
+    for (int i = 0; i < 20; ++i) {
+      const D3 u = {g(rng), g(rng), g(rng)};
+      const long double d = distance_to_set(set, u);
+      // A tolerance near the distance, so that both answers come up.
+      const double theta = std::clamp(double(d) * std::uniform_real_distribution<double>(0.5, 1.5)(rng), 1e-6, 1.5);
+      const double s2 = std::sin(theta) * std::sin(theta);
+      const long double theta_exact = std::asin(std::sqrt((long double)s2));
+      if (std::fabs(d - theta_exact) < 1e-9) continue;
+      const bool expected = d <= theta_exact;
+      (expected ? near : far) += 1;
+      ASSERT_EQ(within_angle(set, ev(u), s2), expected) << set.description() << " d " << double(d) << " theta " << theta;
+    }
+  }
+  EXPECT_GT(near, 500);
+  EXPECT_GT(far, 500);
+}
+
+TEST(SphereNearness, WithinAngleAtExactTies) {
+  // sin^2 45 degrees = 1/2 exactly: a point, a circle and an arc's end 45 degrees away.
+  const ExactVec x = iv(1, 0, 0);
+  const double half = 0.5, below = std::nextafter(0.5, 0.0);
+  EXPECT_TRUE(within_angle(SphericalImage::point(iv(1, 1, 0)), x, half));
+  EXPECT_FALSE(within_angle(SphericalImage::point(iv(1, 1, 0)), x, below));
+  EXPECT_TRUE(within_angle(SphericalImage::great_circle(iv(1, 0, 1)), x, half));
+  EXPECT_FALSE(within_angle(SphericalImage::great_circle(iv(1, 0, 1)), x, below));
+  EXPECT_TRUE(within_angle(SphericalImage::hemisphere(iv(-1, 0, 1)), x, half));
+  EXPECT_FALSE(within_angle(SphericalImage::hemisphere(iv(-1, 0, 1)), x, below));
+  SphericalImage arc;  // from (1, 1, 0) on around +z: x is nearest its start
+  arc.add_curve({iv(1, 1, 0), iv(-1, 1, 0), iv(0, 0, 1), false});
+  EXPECT_TRUE(within_angle(arc, x, half));
+  EXPECT_FALSE(within_angle(arc, x, below));
+  EXPECT_FALSE(within_angle(SphericalImage::point(iv(-1, 0, 0)), x, 0.999));  // beyond 90 degrees
+  EXPECT_TRUE(within_angle(SphericalImage::point(iv(1, 0, 0)), x, 0));        // zero is an answer
+}
+
+TEST(SphereNearness, SetsWithinAngleAgainstSampledDistances) {
+  constexpr uint64_t kBaseSeed = 7057;
+  int near = 0, far = 0;
+  for (uint64_t s = 0; s < 300; ++s) {
+    std::mt19937_64 rng(kBaseSeed + s);
+    const SphericalImage a = s % 2 ? testing::random_image(rng) : random_face_set(rng);
+    const SphericalImage b = s % 3 ? testing::random_image(rng) : random_face_set(rng);
+    if (a.is_empty() || b.is_empty() || a.is_full_sphere() || b.is_full_sphere()) continue;
+    // The distance sampled from a's side: its corners, points along its arcs and
+    // boundaries, each to b -- an upper bound of the distance between the sets, and equal
+    // to it when the sets are nearest at a corner of a.
+    long double sampled = kPiL;
+    auto sample_arc = [&](const Arc& arc) {
+      for (const ExactVec& v : split_arc(arc)) sampled = std::min(sampled, distance_to_set(b, v.unit()));
+    };
+    for (const Face& f : a.faces())
+      for (const Loop& l : f.loops)
+        for (const Arc& arc : l.arcs) sample_arc(arc);
+    for (const Arc& arc : a.curves()) sample_arc(arc);
+    for (const ExactVec& p : a.points()) sampled = std::min(sampled, distance_to_set(b, p.unit()));
+    for (const double theta : {0.02, 0.2, 0.6}) {
+      const double s2 = std::sin(theta) * std::sin(theta);
+      const bool within = sets_within_angle(a, b, s2);
+      // Near at a sampled point means within; not within means every sample is farther.
+      if (sampled < theta - 1e-9) EXPECT_TRUE(within) << a.description() << " / " << b.description();
+      if (!within) EXPECT_GT(sampled, theta - 1e-9);
+      if (!within) {
+        // From b's side as well, and no common direction.
+        for (const ExactVec& v : corners(b)) EXPECT_GT(distance_to_set(a, v.unit()), theta - 1e-9);
+        EXPECT_TRUE(set_intersection(a, b).is_empty());
+      }
+      (within ? near : far) += 1;
+    }
+  }
+  EXPECT_GT(near, 200);
+  EXPECT_GT(far, 60);
+}
+
+// Every direction within theta of the set lies in its dilation cover: random directions,
+// and directions just under theta beyond every corner and off every arc's middle.
+TEST(SphereNearness, DilationCoverHoldsTheNeighbourhood) {
+  constexpr uint64_t kBaseSeed = 8093;
+  int tested = 0;
+  for (uint64_t s = 0; s < 120; ++s) {
+    std::mt19937_64 rng(kBaseSeed + s);
+    const SphericalImage set = s % 3 == 0 ? testing::random_image(rng) : random_face_set(rng);
+    if (set.is_full_sphere() || set.is_empty()) continue;
+    const double theta = s % 2 ? 1e-6 : 0.02;
+    const double s2 = std::sin(theta) * std::sin(theta);
+    const std::optional<SphericalImage> cover = dilation_cover(set, theta, s2 * (1 + 1e-12));
+    ASSERT_TRUE(cover.has_value()) << set.description();
+    std::vector<D3> probes;
+    std::normal_distribution<double> g;
+    for (int i = 0; i < 20; ++i) probes.push_back({g(rng), g(rng), g(rng)});
+    for (const ExactVec& c : corners(set)) {
+      const D3 u = c.unit();
+      for (int i = 0; i < 4; ++i) {
+        D3 w = {g(rng), g(rng), g(rng)};
+        const double along = w[0] * u[0] + w[1] * u[1] + w[2] * u[2];
+        for (int k = 0; k < 3; ++k) w[k] -= along * u[k];
+        const double n = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        const double t = 0.999 * theta;
+        probes.push_back({u[0] * std::cos(t) + w[0] / n * std::sin(t), u[1] * std::cos(t) + w[1] / n * std::sin(t),
+                          u[2] * std::cos(t) + w[2] / n * std::sin(t)});
+      }
+    }
+    for (const D3& u : probes) {
+      if (!within_angle(set, ev(u), s2 * (1 - 1e-12))) continue;
+      ++tested;
+      EXPECT_TRUE(cover->contains(ev(u))) << set.description() << " theta " << theta;
+    }
+  }
+  EXPECT_GT(tested, 500);
 }
 
 }  // namespace

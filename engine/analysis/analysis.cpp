@@ -1,5 +1,5 @@
-// Queries on a finished analysis: accessors, and the maps, blockers and planar pieces of
-// any set of faces, computed on demand from the part it owns.
+// Queries on a finished analysis: accessors, and the maps and blockers of any set of
+// faces, computed on demand from the part it owns (its pieces: pieces.cpp).
 #include <algorithm>
 #include <chrono>
 #include <numeric>
@@ -54,8 +54,6 @@ SurfaceMaps surface_maps(const SolidMesh& mesh, SurfaceVisibility vis, double se
   return out;
 }
 
-namespace {
-
 exact::ExactVec normal_of(const SolidMesh& mesh, uint32_t t) {
   const Triangle& tri = mesh.triangles[t];
   return exact::triangle_normal(mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]);
@@ -73,8 +71,6 @@ bool coplanar_alike(const SolidMesh& mesh, uint32_t a, uint32_t b) {
   return exact::sign_dot(normal_of(mesh, a), normal_of(mesh, b)) == Sign::kPositive;
 }
 
-}  // namespace
-
 std::optional<Direction> common_plane_normal(const SolidMesh& mesh,
                                              std::span<const uint32_t> triangles) {
   if (triangles.empty()) return std::nullopt;
@@ -83,12 +79,6 @@ std::optional<Direction> common_plane_normal(const SolidMesh& mesh,
   }
   return Direction(std::make_shared<const exact::ExactVec>(normal_of(mesh, triangles.front())));
 }
-
-}  // namespace analysis_internal
-
-using namespace analysis_internal;
-
-namespace {
 
 // Triangles of the given input faces, or the first face that is not in the part.
 StatusOr<std::vector<uint32_t>> triangles_of(const SolidMesh& mesh, std::span<const uint32_t> faces) {
@@ -107,7 +97,9 @@ StatusOr<std::vector<uint32_t>> triangles_of(const SolidMesh& mesh, std::span<co
   return out;
 }
 
-}  // namespace
+}  // namespace analysis_internal
+
+using namespace analysis_internal;
 
 Analysis::Analysis(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
@@ -176,33 +168,6 @@ std::vector<uint32_t> Analysis::neighbor_faces(std::span<const uint32_t> faces) 
   auto tris = triangles_of(mesh, faces);
   if (!tris.ok() || tris->empty()) return {};
   return input_faces(mesh, impl_->part.neighbor_occluders(*tris));
-}
-
-std::vector<std::vector<uint32_t>> Analysis::planar_pieces(std::span<const uint32_t> faces) const {
-  const SolidMesh& mesh = impl_->part.mesh();
-  auto tris = triangles_of(mesh, faces);
-  if (!tris.ok()) return {};
-  std::vector<uint32_t> piece(mesh.triangles.size(), UINT32_MAX);
-  for (uint32_t t : *tris) piece[t] = t;
-  auto find = [&](uint32_t x) {
-    while (piece[x] != x) x = piece[x] = piece[piece[x]];
-    return x;
-  };
-  for (uint32_t t : *tris) {
-    for (uint32_t n : mesh.neighbor[t]) {
-      if (piece[n] == UINT32_MAX || !coplanar_alike(mesh, t, n)) continue;
-      const uint32_t a = find(t), b = find(n);
-      if (a != b) piece[std::max(a, b)] = std::min(a, b);
-    }
-  }
-  std::vector<std::vector<uint32_t>> by_root(mesh.triangles.size());
-  for (uint32_t t : *tris) by_root[find(t)].push_back(t);
-  std::vector<std::vector<uint32_t>> out;
-  for (const auto& members : by_root) {
-    if (!members.empty()) out.push_back(input_faces(mesh, members));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
 }
 
 }  // namespace gvm

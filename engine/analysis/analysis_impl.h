@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gvm/analysis.h"
+#include "exact/exact_vec.h"
 #include "gvm/part.h"
 #include "visibility/surface_visibility.h"
 
@@ -35,6 +36,14 @@ std::vector<uint32_t> input_faces(const SolidMesh& mesh, std::span<const uint32_
 // orientation.
 std::optional<Direction> common_plane_normal(const SolidMesh& mesh,
                                              std::span<const uint32_t> triangles);
+
+// The exact normal of triangle t; whether triangles a and b lie in one plane with one
+// orientation.
+exact::ExactVec normal_of(const SolidMesh& mesh, uint32_t t);
+bool coplanar_alike(const SolidMesh& mesh, uint32_t a, uint32_t b);
+
+// Triangles of the given input faces (ascending), or the first face not in the part.
+StatusOr<std::vector<uint32_t>> triangles_of(const SolidMesh& mesh, std::span<const uint32_t> faces);
 
 }  // namespace analysis_internal
 }  // namespace gvm

@@ -118,6 +118,8 @@ StepOptions step_options(const v1::StepOptions& o) {
   if (o.has_solid()) out.solid = static_cast<int>(o.solid());
   out.group_holes = o.group_holes();
   out.faithful = !o.brepmesh_only();
+  out.max_memory_bytes = uint64_t(o.reader_memory_mb()) << 20;
+  out.max_seconds = o.reader_seconds();
   return out;
 }
 
@@ -208,6 +210,7 @@ std::vector<Surface> surfaces_of(const Part& part, std::vector<std::span<const u
     s.id = f.id;
     s.name = f.name;
     s.on_hull = f.on_hull;
+    s.automatic = f.automatic;
     s.region = f.region;
     s.faces = input_faces(mesh, f.triangles);
     s.planar_normal = common_plane_normal(mesh, f.triangles);
@@ -291,6 +294,14 @@ Status validate_step(const v1::StepOptions& step) {
   if (!(std::isfinite(angle) && angle >= 0 && angle < 90)) {
     return InvalidArgument("step.angular_deflection_degrees must be an angle in degrees, 0 < DEG < 90 (0: the default), not " +
                            std::to_string(angle));
+  }
+  if (!(std::isfinite(step.reader_seconds()) && step.reader_seconds() >= 0)) {
+    return InvalidArgument("step.reader_seconds must be a number of seconds > 0 (0: the default), not " +
+                           std::to_string(step.reader_seconds()));
+  }
+  if (step.reader_memory_mb() > 0 && step.reader_memory_mb() < 64) {
+    return InvalidArgument("step.reader_memory_mb must be at least 64 MiB (0: the default), not " +
+                           std::to_string(step.reader_memory_mb()));
   }
   if (!v1::StepFeatures_IsValid(step.features())) {
     return InvalidArgument("step.features " + std::to_string(step.features()) + " is not brep or auto");

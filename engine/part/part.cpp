@@ -275,7 +275,8 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
         feature_of_root[r] = static_cast<uint32_t>(I.features.size());
         Feature f;
         f.id = feature_of_root[r];
-        f.name = tri_group[t] != kNone ? group_names[tri_group[t]] : "F" + std::to_string(f.id);
+        f.automatic = tri_group[t] == kNone;
+        f.name = f.automatic ? "F" + std::to_string(f.id) : group_names[tri_group[t]];
         f.on_hull = true;
         I.features.push_back(std::move(f));
       }

@@ -5,6 +5,7 @@
 
 #include "exact/exact_vec.h"
 #include "sphere/clearance.h"
+#include "sphere/nearness.h"
 #include "sphere/local_visibility_map.h"
 #include "sphere/set_operations.h"
 #include "sphere/spherical_image.h"
@@ -148,6 +149,26 @@ bool DirectionSet::within_closed_hemisphere(const Direction& n) const {
 
 bool DirectionSet::contains_cap(const Direction& center, double sin2) const {
   return sphere::contains_cap(*image_, center.exact(), sin2);
+}
+
+bool DirectionSet::within(const Direction& u, double sin2) const {
+  return sphere::within_angle(*image_, u.exact(), sin2);
+}
+
+bool DirectionSet::within(const DirectionSet& other, double sin2) const {
+  return sphere::sets_within_angle(*image_, *other.image_, sin2);
+}
+
+std::vector<Direction> DirectionSet::corners() const {
+  std::vector<Direction> out;
+  for (const ExactVec& v : sphere::corners(*image_)) out.push_back(wrap(v));
+  return out;
+}
+
+std::optional<DirectionSet> DirectionSet::dilation_cover(double theta, double sin2) const {
+  std::optional<SphericalImage> cover = sphere::dilation_cover(*image_, theta, sin2);
+  if (!cover) return std::nullopt;
+  return wrap(std::move(*cover));
 }
 
 double DirectionSet::approx_signed_clearance(const std::array<double, 3>& u) const {

@@ -1,6 +1,7 @@
 // The STEP module's reader (step_module.h): STEP translation (serialised, see gvm/step.h),
 // then solid selection, face records and tessellation. Every Open CASCADE exception
 // becomes a Status here.
+#include <Standard_OutOfMemory.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepBndLib.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -167,10 +168,24 @@ StatusOr<StepPart> read_bytes(std::string_view bytes, const StepOptions& options
   if (Status s = check_options(options, source); !s.ok()) return s;
   try {
     return read_checked(bytes, options, source);
+  } catch (const Standard_OutOfMemory&) {
+    return ResourceExhausted(source + ": out of memory while reading");
+  } catch (const std::bad_alloc&) {
+    return ResourceExhausted(source + ": out of memory while reading");
   } catch (const Standard_Failure& e) {
     return InvalidArgument(source + ": Open CASCADE failed on this file (" +
                            e.DynamicType()->Name() + ": " + e.GetMessageString() + ")");
+  } catch (const std::system_error& e) {
+    // A thread (BRepMesh's) that cannot get its stack under the address-space limit.
+    if (e.code() == std::errc::resource_unavailable_try_again || e.code() == std::errc::not_enough_memory) {
+      return ResourceExhausted(source + ": out of memory while reading");
+    }
+    return InvalidArgument(source + ": reading failed (" + e.what() + ")");
   } catch (const std::exception& e) {
+    // TBB's threads (BRepMesh's) that get no stack say so in a runtime_error.
+    if (std::string_view(e.what()).starts_with("pthread_create has failed")) {
+      return ResourceExhausted(source + ": out of memory while reading");
+    }
     return InvalidArgument(source + ": reading failed (" + e.what() + ")");
   }
 }

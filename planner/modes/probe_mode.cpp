@@ -89,26 +89,24 @@ class ProbeMode final : public Mode {
         sin2_(sin2_at_least(o.cone_degrees())) {}
 
   CandidateSet candidates(std::span<const Target> targets) const override {
-    std::vector<Direction> directions;
-    for (const Orientation& o : grid_) directions.push_back(o.direction);
-    CandidateSet out;
-    out.candidates = evaluate(directions, targets.size(),
-                              [&](uint32_t t, const Direction& d) { return serves(targets[t], d); });
-    out.evaluated = static_cast<uint32_t>(directions.size());
-    out.description = "the " + std::to_string(grid_.size()) + " distinct orientations of the head grid";
-    return out;
+    return on_grid(targets, [&](uint32_t t, const Direction& d) { return serves(targets[t], d); });
+  }
+
+  std::optional<CandidateSet> candidates_within(std::span<const Target> targets,
+                                                const Tolerance& tolerance) const override {
+    return on_grid(targets, [&](uint32_t t, const Direction& d) { return serves_within(targets[t], d, tolerance); });
   }
 
   PlacedSetup place(const Candidate& chosen, std::span<const Target> targets,
                     std::span<const uint32_t> assigned) const override {
-    const Placement at = placement_at(reach_sets(targets, assigned), chosen.direction);
-    PlacedSetup p;
-    p.direction = chosen.direction;
+    return place_fixed(chosen, targets, assigned, {});
+  }
+
+  PlacedSetup place_fixed(const Candidate& chosen, std::span<const Target> targets,
+                          std::span<const uint32_t> assigned, std::span<const uint32_t> loose) const override {
+    PlacedSetup p = Mode::place_fixed(chosen, targets, assigned, loose);
     p.head_a_degrees = grid_[chosen.source].a;
     p.head_b_degrees = grid_[chosen.source].b;
-    for (size_t i = 0; i < assigned.size(); ++i) {
-      p.reach.push_back({assigned[i], at.clearance_degrees[i], at.exact_alignment[i], {}, 0});
-    }
     return p;
   }
 
@@ -136,7 +134,25 @@ class ProbeMode final : public Mode {
     return t.reach.dimension() == 2 ? t.reach.contains_cap(d, sin2_) : t.reach.contains(d);
   }
 
+  // The tolerance comes off the cone: every direction of the cone is then within epsilon
+  // of the GVM.
+  bool serves_within(const Target& t, const Direction& d, const Tolerance& tolerance) const override {
+    if (t.reach.dimension() < 2) return t.reach.within(d, tolerance.near_sin2);
+    const double cone = cone_ - tolerance.radians * (180 / M_PI);
+    return t.reach.contains_cap(d, cone > 0 ? sin2_at_least(cone) : 0);
+  }
+
  private:
+  CandidateSet on_grid(std::span<const Target> targets,
+                       const std::function<bool(uint32_t, const Direction&)>& serves_target) const {
+    std::vector<Direction> directions;
+    for (const Orientation& o : grid_) directions.push_back(o.direction);
+    CandidateSet out;
+    out.candidates = evaluate(directions, targets.size(), serves_target);
+    out.evaluated = static_cast<uint32_t>(directions.size());
+    out.description = "the " + std::to_string(grid_.size()) + " distinct orientations of the head grid";
+    return out;
+  }
 
   std::vector<Orientation> grid_;
   double cone_, sin2_;

@@ -41,6 +41,21 @@ double most_open_angle(const DirectionSet& gvm, const std::vector<std::array<dou
   return best;
 }
 
+// The table angle (radians in [0, 2 pi), doubles) of the corner of `directions` nearest
+// the circle normal to `axis`.
+double nearest_angle(const DirectionSet& directions, const Direction& zero, const Direction& axis) {
+  const std::array<double, 3> a = axis.unit(), e1 = zero.unit(), e2 = cross(axis, zero).unit();
+  double best = 2, angle = 0;
+  for (const Direction& c : directions.corners()) {
+    const std::array<double, 3> u = c.unit();
+    const double off = std::fabs(u[0] * a[0] + u[1] * a[1] + u[2] * a[2]);
+    if (off >= best) continue;
+    best = off;
+    angle = std::atan2(u[0] * e2[0] + u[1] * e2[1] + u[2] * e2[2], u[0] * e1[0] + u[1] * e1[1] + u[2] * e1[2]);
+  }
+  return angle < 0 ? angle + 2 * M_PI : angle;
+}
+
 class RotaryMode final : public Mode {
  public:
   DirectionSet reach_of(const DirectionSet& directions) const override {
@@ -59,6 +74,25 @@ class RotaryMode final : public Mode {
   PlacedSetup place(const Candidate& chosen, std::span<const Target> targets,
                     std::span<const uint32_t> assigned) const override {
     PlacedSetup p = placed_at(chosen.direction, targets, assigned);
+    table_angles(p, targets);
+    return p;
+  }
+
+  PlacedSetup place_fixed(const Candidate& chosen, std::span<const Target> targets,
+                          std::span<const uint32_t> assigned, std::span<const uint32_t> loose) const override {
+    PlacedSetup p = Mode::place_fixed(chosen, targets, assigned, loose);
+    table_angles(p, targets);
+    return p;
+  }
+
+  Unserved unserved(const Target&) const override { return {}; }  // every axis set is exact
+
+ private:
+  // The table angles at which the tool reaches each target: its exact intervals and the
+  // most open angle among them; for a target reached only within the tolerance (no
+  // interval), the angle where its directions come nearest the circle -- at one of their
+  // corners, since along an arc that misses a circle the distance to it is least at an end.
+  static void table_angles(PlacedSetup& p, std::span<const Target> targets) {
     p.rotary_zero = table_zero(p.direction);
     for (TargetReach& r : p.reach) {
       const Target& t = targets[r.target];
@@ -70,12 +104,11 @@ class RotaryMode final : public Mode {
         for (auto [from, to] : r.rotary_angles) radians.push_back({from * kDegree, to * kDegree});
         const double chosen = most_open_angle(t.directions, radians, *p.rotary_zero, p.direction) / kDegree;
         r.rotary_angle_degrees = std::fmod(chosen, 360.0);  // the intervals may run past 360
+      } else {
+        r.rotary_angle_degrees = nearest_angle(t.directions, *p.rotary_zero, p.direction) / kDegree;
       }
     }
-    return p;
   }
-
-  Unserved unserved(const Target&) const override { return {}; }  // every axis set is exact
 };
 
 }  // namespace

@@ -81,6 +81,13 @@ class SetupMode final : public Mode {
     return t.reach.dimension() == 2 ? t.reach.contains_cap(d, sin2_) : t.reach.contains(d);
   }
 
+  // A clearance requirement stays as stated: the tolerance relaxes only the membership of
+  // the arcs and points it does not apply to.
+  bool serves_within(const Target& t, const Direction& d, const Tolerance& tolerance) const override {
+    if (theta_ > 0 && t.reach.dimension() == 2) return t.reach.contains_cap(d, sin2_);
+    return t.reach.within(d, tolerance.near_sin2);
+  }
+
  private:
   static constexpr size_t kGrid = 2000;
 

@@ -1,5 +1,6 @@
 #include "face_classes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -82,8 +83,14 @@ std::string setup_word(v1::PlanMode mode) {
 
 template <class Surfaces>
 void paint_plan(const Surfaces& surfaces, const v1::Plan& plan, int32_t unreachable, FaceClasses& out) {
+  std::vector<uint32_t> unreached;
+  for (const v1::Unreachable& u : plan.unreachable()) unreached.push_back(u.feature());
   for (const v1::PlannedSurface& p : plan.surfaces()) {
-    const int32_t cls = p.setup() >= 0 ? p.setup() : unreachable;
+    // A surface reached piece by piece takes its first piece's setup (its faces are
+    // painted piece by piece below).
+    const bool by_pieces = p.has_pieces() && p.pieces().setups_size() > 0 &&
+                           std::find(unreached.begin(), unreached.end(), p.id()) == unreached.end();
+    const int32_t cls = p.setup() >= 0 ? p.setup() : by_pieces ? p.pieces().setups(0) : unreachable;
     if (p.id() < out.surface_class.size()) out.surface_class[p.id()] = cls;
     for (const auto& s : surfaces) {
       if (s.id() == p.id()) paint(out, s.faces(), cls);

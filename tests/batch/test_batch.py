@@ -154,10 +154,11 @@ class Resume(BatchCase):
         self.assertEqual(load(os.path.join(out, "summary.json"))["skipped"], 0)
 
     def test_sigterm_interrupts_the_running_part_and_resume_finishes(self):
-        # The largest part starts first and takes ten times longer than the tiny ones, so
-        # it is still running when the first tiny one is done and the signal comes (with
-        # tiny parts only, a busy machine can deliver it between two parts, when none runs).
-        long_one = os.path.join(PARTS, "prusa_adapter-printer.stl")
+        # The largest part starts first and takes ten times longer than the tiny ones (10 s
+        # against 0.03-5.5 s planned), so it is still running when the first tiny one is
+        # done and the signal comes (with tiny parts only, a busy machine can deliver it
+        # between two parts, when none runs).
+        long_one = os.path.join(PARTS, "prusa_x-end-idler.stl")
         manifest = write_manifest(self.dir, [long_one] + TINY_PARTS)
         out = os.path.join(self.dir, "out")
         proc = subprocess.Popen([GVM, "batch", manifest, "--out", out, "--threads", "1", "--jobs", "2"],
@@ -171,7 +172,7 @@ class Resume(BatchCase):
         summary = load(os.path.join(out, "summary.json"))
         statuses = [p.get("status", "BATCH_STATUS_UNSPECIFIED") for p in summary["parts"]]
         self.assertIn("BATCH_STATUS_INTERRUPTED", statuses)
-        self.assertEqual(records(out)["prusa_adapter-printer"]["status"], "BATCH_STATUS_INTERRUPTED")
+        self.assertEqual(records(out)["prusa_x-end-idler"]["status"], "BATCH_STATUS_INTERRUPTED")
         self.assertNotIn("BATCH_STATUS_RUNNING", [r["status"] for r in records(out).values()])
         self.assertIn("--resume goes on", stdout)
         batch(manifest, out, "--threads", "1", "--resume", check=0)

@@ -377,6 +377,19 @@ def main():
         if data:
             put('fuzz_groups', name + '.json', data)
 
+    # STEP: the smallest shared parts whole, and cut down to their first entities (the
+    # parser and the checks of an incomplete file).
+    step = os.path.join(args.shared, 'data', 'step')
+    for name in ['bug25169_box-openshell.stp', 'bug3883_xr2-ct-214_l-bracket.stp', 'bug3883_xr2-ct-214_plate.stp']:
+        with open(os.path.join(step, name), 'rb') as f:
+            data = f.read()
+        put('fuzz_step', name, data)
+        lines = data.split(b'\n')
+        data_at = next(i for i, l in enumerate(lines) if l.strip() == b'DATA;')
+        for keep in (40, 200):
+            cut_step = b'\n'.join(lines[:data_at + 1 + keep] + [b'ENDSEC;', b'END-ISO-10303-21;', b''])
+            put('fuzz_step', 'cut%d_%s' % (keep, name), cut_step)
+
     for target in sorted(os.listdir(corpus)):
         files = os.listdir(os.path.join(corpus, target))
         size = sum(os.path.getsize(os.path.join(corpus, target, f)) for f in files)

@@ -80,6 +80,7 @@ struct Surface {
   std::string name;                  // features: the user's group name or "F<id>"
   std::vector<uint32_t> faces;       // input face indices, ascending
   bool on_hull = false;              // features: every face is a hull facet
+  bool automatic = false;            // features: found by the feature angle (not a group or B-rep face)
   int32_t region = -1;               // features: the concave region, -1 on the hull
   bool is_void = false;              // regions: bounds an internal void
   std::vector<uint32_t> features;    // regions: the features inside
@@ -142,6 +143,19 @@ class Analysis {
   // orientation (a triangulated CAD face is one piece; each facet of a curved face is
   // its own), each ascending, in order of their smallest face.
   std::vector<std::vector<uint32_t>> planar_pieces(std::span<const uint32_t> faces) const;
+  // How visible_pieces grows a piece from its seed (the largest planar piece left).
+  enum class Growth {
+    kCommonDirection,  // while some direction sees it all: the fewest pieces
+    kAlongSeedNormal,  // while the seed's normal does: pieces cut from one side each
+  };
+  // The given faces in edge-connected pieces each of which has a direction of its own
+  // (LVM(S + N_S) is not empty), grown face by face while the hemispheres of the normals
+  // of their faces and N_S keep one (decided exactly): a flat top with the fillets and
+  // walls it was joined to comes apart where no one direction sees them all. Each
+  // ascending, in order of their smallest face; empty when the calling TBB task group is
+  // cancelled or a face is not in the part.
+  std::vector<std::vector<uint32_t>> visible_pieces(std::span<const uint32_t> faces,
+                                                    Growth growth = Growth::kCommonDirection) const;
 
   struct Impl;
   explicit Analysis(std::shared_ptr<const Impl> impl);

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -61,6 +62,17 @@ class DirectionSet {
   // The closed cap {u : angle(u, center) <= theta} lies in the set, where
   // sin2 = sin^2(theta) (0 <= sin2 <= 1, a double taken exactly). Exact.
   bool contains_cap(const Direction& center, double sin2) const;
+  // Some direction of the set lies within theta of u, where sin2 = sin^2(theta)
+  // (0 <= sin2 < 1, a double taken exactly): the planner's tolerance. Exact.
+  bool within(const Direction& u, double sin2) const;
+  // Some direction of the set lies within theta of some direction of `other`. Exact.
+  bool within(const DirectionSet& other, double sin2) const;
+  // The set's corners: its points, the ends of its arcs, the vertices of its 2-cells.
+  std::vector<Direction> corners() const;
+  // A closed set bounded by great circles holding every direction within theta (radians)
+  // of this one, where sin2 >= sin^2(theta): certified exactly, a little larger than the
+  // theta-neighbourhood (for lower bounds). Nothing when it cannot be certified.
+  std::optional<DirectionSet> dilation_cover(double theta, double sin2) const;
   // For searches only: angular distance (radians) from the unit vector u to the set's
   // boundary when u is inside a 2-cell, 0 on an arc or point of the set, minus the
   // distance to the set outside it.

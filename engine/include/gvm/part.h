@@ -30,6 +30,7 @@ struct Feature {
   std::vector<uint32_t> triangles;   // ascending
   int32_t region = -1;               // concave region id, -1 when every triangle is on the hull
   bool on_hull = false;
+  bool automatic = false;            // found by the feature angle, not given as a group
 };
 
 struct PartOptions {

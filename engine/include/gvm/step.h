@@ -8,10 +8,11 @@
 // shared discretisation of every edge -- so the weld follows the topology and never
 // compares coordinates.
 //
-// Thread safety: read_step may be called from several threads. The STEP translation uses
-// Open CASCADE's process-wide Interface_Static parameters (the length unit among them), so
-// that part of the work is serialised by a mutex inside the module; meshing and the weld
-// run concurrently.
+// Isolation: Open CASCADE is not hardened against hostile input, so the reading runs in a
+// short-lived worker process (gvm-step-worker, found beside the program, then where the
+// build put it), under limits of memory and time, with no descriptors but its pipes; the
+// mesh and the face records come back as a protobuf message (step_worker.proto).
+// read_step may be called from several threads: each call has its own worker.
 #pragma once
 
 #include <array>
@@ -105,8 +106,13 @@ struct StepOptions {
   // (hole walls parallel to their axes, parallel planes parallel). false: BRepMesh's
   // triangles as they are.
   bool faithful = true;
-  // A stop request ends the reading (kCancelled) at the next check: between parsing,
-  // translation, checking and meshing, and inside translation and meshing.
+  // The reading runs in a worker process (gvm-step-worker) under these limits: its
+  // address space (0: 1 GiB plus 256 times the file's size, at least 2 GiB) and its time
+  // (0: 600 s of CPU, and as long in wall time). A worker over a limit, killed by a
+  // signal or answering nonsense fails this part only, with the reason.
+  uint64_t max_memory_bytes = 0;
+  double max_seconds = 0;
+  // A stop request ends the reading (kCancelled) within about 50 ms: the worker is killed.
   std::stop_token stop;
 };
 
@@ -124,10 +130,12 @@ struct StepPart {
 };
 
 // Reads the file, checks that it holds the wanted solid and that the solid is a valid
-// B-rep, tessellates it and welds the triangulation by topology. Fails with kNotFound when
-// the file does not exist, kInvalidArgument (message naming the file and the problem:
-// not STEP, no solid, several solids, invalid B-rep face, face that cannot be
-// triangulated) otherwise, kCancelled on a stop request.
+// B-rep, tessellates it and welds the triangulation by topology -- in a worker process,
+// so that Open CASCADE crashing or looping on a file costs this call only. Fails with
+// kNotFound when the file does not exist, kInvalidArgument (message naming the file and
+// the problem: not STEP, no solid, several solids, invalid B-rep face, face that cannot
+// be triangulated, the reader crashed on it) otherwise, kResourceExhausted over a limit,
+// kCancelled on a stop request, kInternal when the worker cannot be started.
 StatusOr<StepPart> read_step(const std::string& path, const StepOptions& options);
 
 // The same on bytes in memory (STEPControl_Reader::ReadStream); `source` names the part in

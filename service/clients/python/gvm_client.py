@@ -23,7 +23,8 @@ from google.protobuf import json_format  # noqa: E402
 from gvm.v1 import plan_pb2, service_pb2, service_pb2_grpc  # noqa: E402
 
 FORMATS = {".stl": service_pb2.PART_FORMAT_STL, ".off": service_pb2.PART_FORMAT_OFF,
-           ".obj": service_pb2.PART_FORMAT_OBJ, ".ply": service_pb2.PART_FORMAT_PLY}
+           ".obj": service_pb2.PART_FORMAT_OBJ, ".ply": service_pb2.PART_FORMAT_PLY,
+           ".stp": service_pb2.PART_FORMAT_STEP, ".step": service_pb2.PART_FORMAT_STEP}
 MODES = {"setup": plan_pb2.PLAN_MODE_SETUP, "rotary": plan_pb2.PLAN_MODE_ROTARY, "probe": plan_pb2.PLAN_MODE_PROBE}
 
 

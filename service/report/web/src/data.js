@@ -31,10 +31,15 @@ export function surfacesOf(data) {
   return (regions ? a.regions : a.features) || [];
 }
 
-// Which setup reaches each surface (-1: none, whole).
+// Which setup reaches each surface (-1: none, whole; for one planned piece by piece, the
+// words "pieces in setups 1, 6").
 export function setupOfSurface(data) {
   const out = new Map();
-  for (const s of (data.plan && data.plan.surfaces) || []) out.set(s.id || 0, s.setup ?? 0);
+  const unreachable = new Set(((data.plan && data.plan.unreachable) || []).map((u) => u.feature || 0));
+  for (const s of (data.plan && data.plan.surfaces) || []) {
+    const pieces = s.pieces && (s.pieces.setups || []).length && !unreachable.has(s.id || 0);
+    out.set(s.id || 0, pieces ? `pieces in setups ${s.pieces.setups.map((k) => (k || 0) + 1).join(", ")}` : s.setup ?? 0);
+  }
   return out;
 }
 

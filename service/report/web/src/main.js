@@ -55,7 +55,7 @@ function surfaceInfo(id, face = null) {
   const s = byId.get(id);
   if (!s) return face === null ? "" : `face ${face}: hull face, not planned`;
   const setup = setupOf.get(id);
-  const where = plan ? (setup === undefined ? "not planned" : setup >= 0 ? `setup ${setup + 1}` : "unreachable") : "";
+  const where = plan ? (setup === undefined ? "not planned" : typeof setup === "string" ? setup : setup >= 0 ? `setup ${setup + 1}` : "unreachable") : "";
   const image = s.gvm || s.lvm || {};
   const cad = s.cadFace ? ` · B-rep face ${s.cadFace.index || 0}, ${s.cadFace.surfaceType}` +
     (s.cadFace.axis ? ` about ${T.direction(s.cadFace.axis)}` : "") : "";
@@ -98,12 +98,14 @@ function buildTables() {
   const section = (title, ...content) => out.append(T.h("section", {}, T.h("h2", {}, title), ...content));
   if (plan) {
     section("Setups", T.setupTable(plan, colorOfSetup, nameOf, selectSetup));
+    if (plan.tolerance) section("Tolerance", ...T.toleranceTable(plan, nameOf));
+    if ((plan.surfaces || []).some((s) => s.pieces)) section("Planned piece by piece", T.piecesTable(plan, nameOf));
     if ((plan.unreachable || []).length) section("Unreachable", T.unreachableTable(plan, nameOf));
     section("Proof of optimality", T.proofTable(plan, nameOf));
   }
   const regions = plan?.surfacesKind === "PLAN_SURFACES_REGIONS";
   const list = T.surfaceTable(surfaces, regions, colorOfSurface,
-    plan ? (s) => { const k = setupOf.get(s.id || 0); return k === undefined ? "" : k >= 0 ? k + 1 : "unreachable"; } : null,
+    plan ? (s) => { const k = setupOf.get(s.id || 0); return k === undefined ? "" : typeof k === "string" ? k : k >= 0 ? k + 1 : "unreachable"; } : null,
     selectSurface);
   section(regions ? "Concave regions" : "Features", plan ? T.h("details", {}, T.h("summary", {}, `${surfaces.length} surfaces`), list) : list);
   section("Part", T.partTable(data.analysis.part || {}));

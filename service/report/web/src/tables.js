@@ -48,6 +48,12 @@ function names(ids, nameOf, limit = 12) {
   return list.length > limit ? `${list.slice(0, limit).join(", ")} … and ${list.length - limit} more` : list.join(", ");
 }
 
+// A setup's surfaces: pieces as "F7 (piece 2)", "~" after those reached only within the
+// tolerance.
+function reachNames(s, nameOf) {
+  return (s.reach || []).map((r) => `${nameOf(r.feature || 0)}${r.piece ? ` (piece ${r.piece})` : ""}${r.withinTolerance ? "~" : ""}`);
+}
+
 // The setups, each row selecting its setup when clicked.
 export function setupTable(plan, colorOfSetup, nameOf, onSelect) {
   const probe = plan.mode === "PLAN_MODE_PROBE", rotary = plan.mode === "PLAN_MODE_ROTARY";
@@ -56,15 +62,43 @@ export function setupTable(plan, colorOfSetup, nameOf, onSelect) {
   if (rotary) headers.push("tool direction at 0°");
   headers.push("clearance°", "surfaces");
   const rows = (plan.setups || []).map((s, i) => {
-    const surfaces = [...(s.features || []), ...(s.reach || []).filter((r) => (r.faces || []).length).map((r) => r.feature || 0)];
+    const surfaces = reachNames(s, nameOf);
     const cells = [i + 1, swatch(colorOfSetup(i)), direction(s.direction)];
     if (probe) cells.push(num(s.headADegrees), num(s.headBDegrees));
     if (rotary) cells.push(direction(s.rotaryZero));
     cells.push(s.exactAlignment ? "0 (exact alignment)" : num(s.clearanceDegrees, 1),
-      `${surfaces.length}: ${names(surfaces, nameOf)}`);
+      `${surfaces.length}: ${names(surfaces, (x) => x)}`);
     return h("tr", { class: "setup-row", "data-setup": i, onclick: () => onSelect(i) }, cells.map((c) => h("td", {}, c)));
   });
   return table(headers, rows, { class: "setups" });
+}
+
+// What the tolerance did: the surfaces reached only within it, and by how much.
+export function toleranceTable(plan, nameOf) {
+  const t = plan.tolerance || {};
+  const rows = [];
+  (plan.setups || []).forEach((s, i) => {
+    for (const r of s.reach || []) {
+      if (!r.withinTolerance) continue;
+      rows.push(h("tr", {}, h("td", {}, nameOf(r.feature || 0) + (r.piece ? ` (piece ${r.piece})` : "")),
+        h("td", {}, i + 1), h("td", {}, Number(r.distanceRadians || 0).toExponential(1))));
+    }
+  });
+  const n = (plan.setups || []).length, exact = t.exactSetups || 0;
+  const summary = h("p", {}, `Tolerance ${Number(t.radians || 0).toExponential(1)} rad: ${n} setups within it` +
+    (exact !== n ? `; ${exact} exactly (lower bound ${t.exactLowerBound || 0})` : ", as many as exactly") +
+    `; ${rows.length} surfaces reached only within it.`);
+  return rows.length ? [summary, table(["surface", "setup", "off its GVM by (rad)"], rows, { class: "within" })] : [summary];
+}
+
+// Surfaces planned piece by piece (no one direction sees all of them), and their setups.
+export function piecesTable(plan, nameOf) {
+  const unreachable = new Set((plan.unreachable || []).map((u) => u.feature || 0));
+  const rows = (plan.surfaces || []).filter((s) => s.pieces).map((s) => h("tr", {},
+    h("td", {}, nameOf(s.id || 0)), h("td", {}, s.pieces.count || 0),
+    h("td", {}, (s.pieces.setups || []).map((k) => (k || 0) + 1).join(", ")),
+    h("td", {}, unreachable.has(s.id || 0) ? "some pieces unreachable" : "every piece reached")));
+  return table(["surface", "pieces", "setups", ""], rows, { class: "pieces" });
 }
 
 export function unreachableTable(plan, nameOf) {
@@ -85,6 +119,10 @@ export function proofTable(plan, nameOf) {
     ["candidate set", `${s.candidateSet || ""} (${s.candidates || 0} candidates, ${s.maximalCandidates || 0} inclusion-maximal)`],
     ["bounds", `greedy ${s.greedySetups || 0}, packing ${s.packingBound || 0}, LP ${num(s.lpBound, 3)}, nodes ${s.nodes || 0}`],
   ];
+  if (plan.tolerance) {
+    const t = plan.tolerance;
+    rows.push(["tolerance", `${Number(t.radians || 0).toExponential(1)} rad; exactly: ${t.exactSetups || 0} setups, lower bound ${t.exactLowerBound || 0}`]);
+  }
   if (s.continuousLowerBound) rows.push(["continuous lower bound", s.continuousLowerBound]);
   if (s.timeLimitReached) rows.push(["time limit", "reached: the best cover found is shown with its gap"]);
   return keyValue(rows, "proof");
