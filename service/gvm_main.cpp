@@ -96,6 +96,8 @@ plan options:
   --no-split           keep automatic features whole (by default one that no
                        single direction sees, its own faces having no common
                        direction, is planned in pieces that each have one)
+  --split-max-faces N  split only automatic features of at most N faces (default
+                       20000: each piece costs a GVM; 0: no limit)
   --split              also plan every other unreachable feature piece by piece
                        (its coplanar connected pieces): "machinable in two setups"
   --time-limit SEC     stop the exact set cover after SEC seconds and report the

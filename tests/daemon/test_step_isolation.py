@@ -108,6 +108,7 @@ class InTheDaemon(unittest.TestCase):
                 return [(p, as_dict(own.Plan(plan_request(p), timeout=600).plan)) for _ in range(rounds) for p in GOOD]
 
         crash_loop(1)  # the daemon warm: every kind of request seen once
+        good_parts(1)
         rss_warm = self.daemon.rss_mib()
         with concurrent.futures.ThreadPoolExecutor(3) as pool:
             crashes = pool.submit(crash_loop, 5)
@@ -167,7 +168,7 @@ class InABatch(unittest.TestCase):
                 f.write("\n".join(GOOD[:2] + CRASHERS + [LOOP]) + "\n")
             out = os.path.join(tmp, "out")
             run = subprocess.run([GVM, "batch", manifest, "--out", out, "--jobs", "2", "--threads", "1",
-                                  "--part-timeout", "5"], capture_output=True, text=True, timeout=900)
+                                  "--part-timeout", "30"], capture_output=True, text=True, timeout=900)
             self.assertEqual(run.returncode, 1, run.stdout + run.stderr)
             with open(os.path.join(out, "summary.json")) as f:
                 parts = {p["name"]: p for p in json.load(f)["parts"]}
