@@ -65,34 +65,6 @@ void to_proto(const PartSummary& p, v1::PartSummary* out) {
   if (p.cad_faces > 0) to_proto(p.tessellation, out->mutable_step_tessellation());
 }
 
-void to_proto(const StepTessellation& t, v1::StepTessellation* out) {
-  out->set_faithful(t.faithful);
-  for (const ExactDirection& d : t.directions) {
-    v1::StepTessellation::ExactDirection* m = out->add_directions();
-    set(m->mutable_brep(), {d.brep[0], d.brep[1], d.brep[2]});
-    for (int64_t c : d.exact) m->add_exact(c);
-    m->set_angle_radians(d.angle);
-    m->set_cad_faces(d.faces);
-  }
-  out->set_max_direction_angle_radians(t.max_direction_angle);
-  out->set_max_node_displacement_mm(t.max_node_displacement);
-  out->set_grid_mm(t.grid);
-  out->set_inserted_points(t.inserted_points);
-  out->set_ruled_faces(t.ruled_faces);
-  for (const InexactRelation& r : t.inexact) {
-    v1::StepTessellation::InexactRelation* m = out->add_inexact();
-    m->set_cad_face(r.cad_face);
-    m->set_ruling(r.ruling);
-    m->set_points(r.points);
-    m->set_distance_mm(r.distance_mm);
-  }
-  for (const auto& [face, why] : t.brepmesh_faces) {
-    v1::StepTessellation::BrepMeshFace* m = out->add_brepmesh_faces();
-    m->set_cad_face(face);
-    m->set_reason(why);
-  }
-}
-
 namespace {
 
 void fill_cad_face(const CadFace& f, v1::CadFace* out) {

@@ -1,5 +1,7 @@
 #include "step_loader/step_worker_messages.h"
 
+#include "gvm/analysis_proto.h"
+
 namespace gvm::step_internal {
 namespace {
 
@@ -10,34 +12,6 @@ void set(v1::Vec3* out, const std::array<double, 3>& v) {
 }
 
 std::array<double, 3> get(const v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-void put_tessellation(const StepTessellation& t, v1::StepTessellation* out) {
-  out->set_faithful(t.faithful);
-  for (const ExactDirection& d : t.directions) {
-    v1::StepTessellation::ExactDirection* m = out->add_directions();
-    set(m->mutable_brep(), d.brep);
-    for (int64_t c : d.exact) m->add_exact(c);
-    m->set_angle_radians(d.angle);
-    m->set_cad_faces(d.faces);
-  }
-  out->set_max_direction_angle_radians(t.max_direction_angle);
-  out->set_max_node_displacement_mm(t.max_node_displacement);
-  out->set_grid_mm(t.grid);
-  out->set_inserted_points(t.inserted_points);
-  out->set_ruled_faces(t.ruled_faces);
-  for (const InexactRelation& r : t.inexact) {
-    v1::StepTessellation::InexactRelation* m = out->add_inexact();
-    m->set_cad_face(r.cad_face);
-    m->set_ruling(r.ruling);
-    m->set_points(r.points);
-    m->set_distance_mm(r.distance_mm);
-  }
-  for (const auto& [face, why] : t.brepmesh_faces) {
-    v1::StepTessellation::BrepMeshFace* m = out->add_brepmesh_faces();
-    m->set_cad_face(face);
-    m->set_reason(why);
-  }
-}
 
 StatusOr<StepTessellation> take_tessellation(const v1::StepTessellation& m) {
   StepTessellation t;
@@ -85,7 +59,7 @@ void put_part(const StepPart& part, v1::StepWorkerPart* out) {
   out->set_file_unit(part.file_unit);
   out->set_linear_deflection(part.linear_deflection);
   out->set_angular_deflection_degrees(part.angular_deflection_degrees);
-  put_tessellation(part.tessellation, out->mutable_tessellation());
+  to_proto(part.tessellation, out->mutable_tessellation());
 }
 
 StatusOr<StepPart> take_part(const v1::StepWorkerPart& m) {
