@@ -5,7 +5,6 @@
 
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include <tuple>
 
 #include "exact_cover.h"
+#include "gvm/cancellable_run.h"
 #include "plan_state.h"
 
 namespace gvm::planner {
@@ -463,30 +463,11 @@ StatusOr<SetupPlan> plan(const Analysis& analysis, const v1::PlanOptions& option
                          const PlanControl& control) {
   if (Status s = validate(options); !s.ok()) return s;
   const v1::PlanOptions applied = with_defaults(options);
-  const int threads = applied.threads() > 0 ? static_cast<int>(applied.threads())
-                                            : tbb::this_task_arena::max_concurrency();
-  tbb::task_arena arena(threads);
-  // Everything runs as one task of `ctx` (so that the engine's interruption points in
-  // serial code see it); a stop request cancels the group, which nested loops inherit.
-  tbb::task_group_context ctx;
-  const std::stop_callback on_stop(control.stop, [&ctx] { ctx.cancel_group_execution(); });
-  const Status cancelled(StatusCode::kCancelled, "planning cancelled");
-  std::optional<StatusOr<SetupPlan>> out;
-  arena.execute([&] {
-    tbb::task_group group(ctx);
-    group.run_and_wait([&] {
-      try {
-        out.emplace(Planner(analysis, applied, control, threads, ctx).run());
-      } catch (...) {
-        // The engine's internal interruption (an overlay or arrangement given up), or
-        // anything a cancelled computation left behind; other failures propagate.
-        if (!ctx.is_group_execution_cancelled()) throw;
-        out.emplace(cancelled);
-      }
-    });
-  });
-  if (!out || ctx.is_group_execution_cancelled()) return cancelled;
-  return std::move(*out);
+  const int threads = arena_threads(static_cast<int>(applied.threads()));
+  return cancellable_run<SetupPlan>(threads, control.stop, "planning cancelled",
+                                    [&](tbb::task_group_context& ctx) {
+                                      return Planner(analysis, applied, control, threads, ctx).run();
+                                    });
 }
 
 }  // namespace gvm::planner

@@ -138,8 +138,8 @@ TEST(PartShared, EveryPartAnalyzes) {
 
 // Feature counts against the angle, on the parts that show the typical CAD surfaces.
 // A larger feature angle only merges: every feature at a smaller angle lies inside one
-// feature at a larger angle, so the counts never grow (the README's table of counts came
-// from this sweep).
+// feature at a larger angle, so the counts never grow (docs/method.md's feature counts
+// came from this sweep).
 TEST(PartShared, FeaturesCoarsenAsTheAngleGrows) {
   const std::vector<std::string> names = {"trimesh_featuretype_from_step.off", "occt_sh1.stl",
                                           "trimesh_20mm-xyz-cube.stl"};

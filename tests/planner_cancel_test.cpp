@@ -34,7 +34,7 @@ TEST(PlannerCancel, StopBeforeStart) {
 }
 
 // prusa_y-motor-holder with --split --no-split (every unreachable feature in its planar
-// pieces) takes more than a minute (README: 78 s on 2 threads): a stop after 0.5 s ends it
+// pieces) takes more than a minute (78 s on 2 threads when measured): a stop after 0.5 s ends it
 // with kCancelled, well before.
 TEST(PlannerCancel, StopWhilePlanning) {
   const Analysis& analysis = y_motor_holder();

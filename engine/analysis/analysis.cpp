@@ -6,8 +6,8 @@
 
 #include "analysis/analysis_impl.h"
 #include "exact/exact_vec.h"
-#include "exact/interrupt.h"
 #include "exact/predicates.h"
+#include "parallel/interrupt.h"
 #include "sphere/local_visibility_map.h"
 #include "visibility/occlusion_probe.h"
 

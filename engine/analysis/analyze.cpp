@@ -3,7 +3,6 @@
 #include <spdlog/spdlog.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -14,10 +13,11 @@
 #include <stop_token>
 
 #include "analysis/analysis_impl.h"
-#include "exact/interrupt.h"
+#include "gvm/cancellable_run.h"
 #include "gvm/mesh.h"
 #include "gvm/part.h"
 #include "mesh/exact_scale.h"
+#include "parallel/interrupt.h"
 
 namespace gvm {
 namespace {
@@ -339,30 +339,13 @@ StatusOr<SolidMesh> load_part_solid(const AnalyzeRequest& request) {
 
 StatusOr<Analysis> analyze(const AnalyzeRequest& request) {
   if (Status s = validate(request.options); !s.ok()) return s;
-  const int threads = request.options.threads() > 0 ? static_cast<int>(request.options.threads())
-                                                    : tbb::this_task_arena::max_concurrency();
+  const int threads = arena_threads(static_cast<int>(request.options.threads()));
   const std::shared_ptr<spdlog::logger> log =
       request.logger ? request.logger : spdlog::default_logger();
-  tbb::task_arena arena(threads);
-  // Everything runs as one task of `ctx` (so that interruption points in serial code see
-  // it too); a stop request cancels the group, which nested TBB loops inherit.
-  tbb::task_group_context ctx;
-  const std::stop_callback on_stop(request.stop, [&ctx] { ctx.cancel_group_execution(); });
-  const Status cancelled(StatusCode::kCancelled, "analysis cancelled");
-  std::optional<StatusOr<Analysis>> out;
-  arena.execute([&] {
-    tbb::task_group group(ctx);
-    group.run_and_wait([&] {
-      try {
-        out.emplace(analyze_in_arena(request, threads, ctx, *log));
-      } catch (const Interrupted&) {
-        out.emplace(cancelled);
-      }
-    });
-  });
-  // Not started (stopped before), or a result that a late cancel may have cut short.
-  if (!out || ctx.is_group_execution_cancelled()) return cancelled;
-  return std::move(*out);
+  return cancellable_run<Analysis>(threads, request.stop, "analysis cancelled",
+                                   [&](tbb::task_group_context& ctx) {
+                                     return analyze_in_arena(request, threads, ctx, *log);
+                                   });
 }
 
 }  // namespace gvm

@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "analysis/analysis_impl.h"
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 
 namespace gvm {
 

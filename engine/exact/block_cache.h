@@ -1,8 +1,9 @@
 // Per-thread caches of freed small blocks, by exact size, for the two allocations the
 // exact layer makes millions of times per part: expression nodes (ExactVec) and GMP limbs
-// of the exact stage. glibc's allocator spent 18% of an analysis in its slow paths
-// (consolidating fast bins, unlinking chunks) because these come and go in bursts larger
-// than its own per-thread cache; a list per size answers them in a few instructions.
+// of the exact stage. glibc's allocator spent a large share of an analysis in its slow
+// paths (consolidating fast bins, unlinking chunks; docs/performance-history.md) because
+// these come and go in bursts larger than its own per-thread cache; a list per size answers
+// them in a few instructions.
 //
 // Blocks come from std::malloc and go back to std::free, so a block may be freed on any
 // thread (into that thread's list) and a cache that is full, or already destroyed at

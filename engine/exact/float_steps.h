@@ -1,6 +1,7 @@
 // Steps of one unit in the last place and scaling by powers of two, without libm calls:
 // boxes are rounded outwards and unit estimates scaled by the million per part, where
-// std::nextafter and std::ldexp cost a call each (6% of prusa_extruder-idler, one thread).
+// std::nextafter and std::ldexp cost a call each (visible in profiles:
+// docs/performance-history.md).
 // Each returns exactly what the libm function returns, for every double.
 #pragma once
 

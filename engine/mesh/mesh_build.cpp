@@ -11,10 +11,10 @@
 #include <span>
 #include <string>
 
-#include "exact/interrupt.h"
 #include "exact/predicates.h"
 #include "gvm/mesh.h"
 #include "mesh/tri_intersect.h"
+#include "parallel/interrupt.h"
 
 namespace gvm {
 namespace {
@@ -212,187 +212,209 @@ bool total_volume_positive(const std::vector<Point3>& P, const std::vector<Trian
   return exact::signed_volume_sign(P, tris, all) == Sign::kPositive;
 }
 
-}  // namespace
-
-StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
-  const std::string& src = raw.source;
-  auto fail = [&](const std::string& what) { return InvalidArgument(src + ": " + what); };
-  const auto& P = raw.points;
-  const auto& F = raw.faces;
-  const uint32_t nf = uint32_t(F.size());
-
-  // 1. Empty mesh.
-  if (F.empty() || P.empty()) return fail("empty mesh (no faces)");
-
-  // 2. Face size and repeated vertex indices (and index range).
-  for (uint32_t f = 0; f < nf; ++f) {
-    if (F[f].size() < 3)
-      return fail("face " + S(f) + " has " + S(F[f].size()) + " vertices (at least 3 needed)");
+// Steps 1 and 2: faces of at least 3 vertices, in range, none repeated.
+std::string check_face_indices(const std::vector<Point3>& P, const std::vector<std::vector<uint32_t>>& F) {
+  if (F.empty() || P.empty()) return "empty mesh (no faces)";
+  for (uint32_t f = 0; f < F.size(); ++f) {
+    if (F[f].size() < 3) return "face " + S(f) + " has " + S(F[f].size()) + " vertices (at least 3 needed)";
     for (size_t i = 0; i < F[f].size(); ++i) {
-      if (F[f][i] >= P.size())
-        return fail("face " + S(f) + " refers to missing vertex " + S(F[f][i]));
+      if (F[f][i] >= P.size()) return "face " + S(f) + " refers to missing vertex " + S(F[f][i]);
       for (size_t j = 0; j < i; ++j)
-        if (F[f][i] == F[f][j])
-          return fail("face " + S(f) + " has the repeated vertex index " + S(F[f][i]));
+        if (F[f][i] == F[f][j]) return "face " + S(f) + " has the repeated vertex index " + S(F[f][i]);
     }
   }
+  return {};
+}
 
-  // 3. Polygons: planar and simple; split into triangles. 4. zero-area faces.
-  std::vector<Triangle> tris;
-  std::vector<uint32_t> tri_face;
-  if (std::string error = triangulate_faces(P, F, tris, tri_face); !error.empty()) return fail(error);
+// The corners (half-edges) of the input polygons, corner c of face f being the edge from
+// its vertex c to the next, with the number of uses of each undirected edge and the twin
+// of each edge used exactly twice.
+struct Corners {
+  const std::vector<std::vector<uint32_t>>& F;
+  std::vector<uint32_t> first, face, uses, twin;
 
-  // 5. Duplicate faces (same vertex set).
-  if (auto pair = first_duplicate_faces(F))
-    return fail("faces " + S(pair->first) + " and " + S(pair->second) + " are duplicates (same vertices)");
-
-  // Corners / half-edges of the input polygons.
-  std::vector<uint32_t> first(nf + 1, 0);
-  for (uint32_t f = 0; f < nf; ++f) first[f + 1] = first[f] + uint32_t(F[f].size());
-  const uint32_t nc = first[nf];
-  std::vector<uint32_t> corner_face(nc);
-  for (uint32_t f = 0; f < nf; ++f)
-    for (uint32_t c = first[f]; c < first[f + 1]; ++c) corner_face[c] = f;
-  auto cv = [&](uint32_t c) { return F[corner_face[c]][c - first[corner_face[c]]]; };
-  auto cnext = [&](uint32_t c) {
-    uint32_t f = corner_face[c];
-    return c + 1 == first[f + 1] ? first[f] : c + 1;
-  };
-  auto cprev = [&](uint32_t c) {
-    uint32_t f = corner_face[c];
-    return c == first[f] ? first[f + 1] - 1 : c - 1;
-  };
-  std::vector<HalfEdge> he(nc);
-  for (uint32_t c = 0; c < nc; ++c) he[c] = {ekey(cv(c), cv(cnext(c))), c};
-  tbb::parallel_sort(he.begin(), he.end(), [](const HalfEdge& a, const HalfEdge& b) {
-    return a.key != b.key ? a.key < b.key : a.id < b.id;
-  });
-  interruption_point();
-  // Per half-edge: number of uses of its undirected edge and its twin.
-  std::vector<uint32_t> uses(nc), twin(nc, UINT32_MAX);
-  for (size_t i = 0; i < nc;) {
-    size_t j = i;
-    while (j < nc && he[j].key == he[i].key) ++j;
-    for (size_t k = i; k < j; ++k) uses[he[k].id] = uint32_t(j - i);
-    if (j - i == 2) {
-      twin[he[i].id] = he[i + 1].id;
-      twin[he[i + 1].id] = he[i].id;
-    }
-    i = j;
+  explicit Corners(const std::vector<std::vector<uint32_t>>& faces) : F(faces), first(faces.size() + 1, 0) {
+    const uint32_t nf = uint32_t(F.size());
+    for (uint32_t f = 0; f < nf; ++f) first[f + 1] = first[f] + uint32_t(F[f].size());
+    face.resize(first[nf]);
+    for (uint32_t f = 0; f < nf; ++f)
+      for (uint32_t c = first[f]; c < first[f + 1]; ++c) face[c] = f;
+    pair_edges();
   }
-  // 6. Border edges, 7. non-manifold edges, 8. inconsistent orientation: first offending
-  // edge in input order.
-  for (uint32_t c = 0; c < nc; ++c)
-    if (uses[c] == 1)
-      return fail("border edge " + edge_name(cv(c), cv(cnext(c))) + " of face " +
-                  S(corner_face[c]) + " is used by no other face (mesh not closed)");
-  for (uint32_t c = 0; c < nc; ++c)
-    if (uses[c] > 2)
-      return fail("non-manifold edge " + edge_name(cv(c), cv(cnext(c))) + " is used by " +
-                  S(uses[c]) + " faces (first: face " + S(corner_face[c]) + ")");
-  for (uint32_t c = 0; c < nc; ++c)
-    if (cv(twin[c]) == cv(c))
-      return fail("inconsistent orientation: faces " + S(corner_face[c]) + " and " +
-                  S(corner_face[twin[c]]) + " both traverse edge " +
-                  edge_name(cv(c), cv(cnext(c))) + " in the same direction");
+  uint32_t size() const { return first.back(); }
+  uint32_t vertex(uint32_t c) const { return F[face[c]][c - first[face[c]]]; }
+  uint32_t next(uint32_t c) const { return c + 1 == first[face[c] + 1] ? first[face[c]] : c + 1; }
+  uint32_t prev(uint32_t c) const { return c == first[face[c]] ? first[face[c] + 1] - 1 : c - 1; }
+  std::string edge(uint32_t c) const { return edge_name(vertex(c), vertex(next(c))); }
 
-  // 9. Non-manifold vertices: the corners at a vertex must form a single fan
-  // (next corner around v = twin of the incoming half-edge).
-  {
-    std::vector<uint32_t> count(P.size(), 0), start(P.size(), UINT32_MAX);
-    for (uint32_t c = 0; c < nc; ++c) {
-      ++count[cv(c)];
-      if (start[cv(c)] == UINT32_MAX) start[cv(c)] = c;
-    }
-    for (uint32_t c = 0; c < nc; ++c) {
-      uint32_t v = cv(c);
-      if (start[v] != c) continue;
-      uint32_t steps = 0, k = c;
-      do {
-        k = twin[cprev(k)];
-        ++steps;
-      } while (k != c && steps <= count[v]);
-      if (steps != count[v])
-        return fail("non-manifold vertex " + S(v) + ": its " + S(count[v]) +
-                    " faces form more than one fan");
+ private:
+  void pair_edges() {
+    const uint32_t nc = size();
+    std::vector<HalfEdge> he(nc);
+    for (uint32_t c = 0; c < nc; ++c) he[c] = {ekey(vertex(c), vertex(next(c))), c};
+    tbb::parallel_sort(he.begin(), he.end(), [](const HalfEdge& a, const HalfEdge& b) {
+      return a.key != b.key ? a.key < b.key : a.id < b.id;
+    });
+    interruption_point();
+    uses.assign(nc, 0);
+    twin.assign(nc, UINT32_MAX);
+    for (size_t i = 0; i < nc;) {
+      size_t j = i;
+      while (j < nc && he[j].key == he[i].key) ++j;
+      for (size_t k = i; k < j; ++k) uses[he[k].id] = uint32_t(j - i);
+      if (j - i == 2) {
+        twin[he[i].id] = he[i + 1].id;
+        twin[he[i + 1].id] = he[i].id;
+      }
+      i = j;
     }
   }
+};
 
-  // Shells: edge-connected components of faces.
-  std::vector<uint32_t> comp(nf);
+// Steps 6-8: border edges, non-manifold edges, inconsistent orientation; the first
+// offending edge in input order.
+std::string check_edges(const Corners& k) {
+  for (uint32_t c = 0; c < k.size(); ++c)
+    if (k.uses[c] == 1)
+      return "border edge " + k.edge(c) + " of face " + S(k.face[c]) + " is used by no other face (mesh not closed)";
+  for (uint32_t c = 0; c < k.size(); ++c)
+    if (k.uses[c] > 2)
+      return "non-manifold edge " + k.edge(c) + " is used by " + S(k.uses[c]) + " faces (first: face " +
+             S(k.face[c]) + ")";
+  for (uint32_t c = 0; c < k.size(); ++c)
+    if (k.vertex(k.twin[c]) == k.vertex(c))
+      return "inconsistent orientation: faces " + S(k.face[c]) + " and " + S(k.face[k.twin[c]]) +
+             " both traverse edge " + k.edge(c) + " in the same direction";
+  return {};
+}
+
+// Step 9: the corners at a vertex form a single fan (the next corner around v is the twin
+// of the incoming half-edge).
+std::string check_vertex_fans(const Corners& k, size_t vertices) {
+  std::vector<uint32_t> count(vertices, 0), start(vertices, UINT32_MAX);
+  for (uint32_t c = 0; c < k.size(); ++c) {
+    ++count[k.vertex(c)];
+    if (start[k.vertex(c)] == UINT32_MAX) start[k.vertex(c)] = c;
+  }
+  for (uint32_t c = 0; c < k.size(); ++c) {
+    const uint32_t v = k.vertex(c);
+    if (start[v] != c) continue;
+    uint32_t steps = 0, around = c;
+    do {
+      around = k.twin[k.prev(around)];
+      ++steps;
+    } while (around != c && steps <= count[v]);
+    if (steps != count[v]) return "non-manifold vertex " + S(v) + ": its " + S(count[v]) + " faces form more than one fan";
+  }
+  return {};
+}
+
+// Shells: the edge-connected components of the faces, numbered in order of their first face.
+std::vector<uint32_t> shells_of_faces(const Corners& k, uint32_t faces, uint32_t& shells) {
+  std::vector<uint32_t> comp(faces);
   std::iota(comp.begin(), comp.end(), 0u);
   auto find = [&](uint32_t x) {
     while (comp[x] != x) x = comp[x] = comp[comp[x]];
     return x;
   };
-  for (uint32_t c = 0; c < nc; ++c) {
-    uint32_t a = find(corner_face[c]), b = find(corner_face[twin[c]]);
+  for (uint32_t c = 0; c < k.size(); ++c) {
+    const uint32_t a = find(k.face[c]), b = find(k.face[k.twin[c]]);
     if (a != b) comp[std::max(a, b)] = std::min(a, b);
   }
-  std::vector<uint32_t> shell_of_face(nf), shell_id(nf, UINT32_MAX);
-  uint32_t nshell = 0;
-  for (uint32_t f = 0; f < nf; ++f) {
-    uint32_t r = find(f);
-    if (shell_id[r] == UINT32_MAX) shell_id[r] = nshell++;
+  std::vector<uint32_t> shell_of_face(faces), shell_id(faces, UINT32_MAX);
+  shells = 0;
+  for (uint32_t f = 0; f < faces; ++f) {
+    const uint32_t r = find(f);
+    if (shell_id[r] == UINT32_MAX) shell_id[r] = shells++;
     shell_of_face[f] = shell_id[r];
   }
-  const uint32_t nt = uint32_t(tris.size());
+  return shell_of_face;
+}
 
-  // 10. Orientation: exact signed volume per shell.
-  std::vector<std::vector<uint32_t>> shell_tris(nshell);
-  for (uint32_t t = 0; t < nt; ++t) shell_tris[shell_of_face[tri_face[t]]].push_back(t);
-  std::vector<bool> is_void(nshell);
-  for (uint32_t s = 0; s < nshell; ++s) {
-    Sign v = exact::signed_volume_sign(P, tris, shell_tris[s]);
+// Step 10: the exact signed volume of each shell: negative is an internal void, zero is
+// refused, and all together must be positive (faces pointing outward).
+std::string orient_shells(const std::vector<Point3>& P, const std::vector<Triangle>& tris,
+                          const std::vector<uint32_t>& tri_face, const std::vector<uint32_t>& shell_of_face,
+                          uint32_t shells, std::vector<bool>& is_void) {
+  std::vector<std::vector<uint32_t>> shell_tris(shells);
+  for (uint32_t t = 0; t < tris.size(); ++t) shell_tris[shell_of_face[tri_face[t]]].push_back(t);
+  is_void.assign(shells, false);
+  for (uint32_t s = 0; s < shells; ++s) {
+    const Sign v = exact::signed_volume_sign(P, tris, shell_tris[s]);
     if (v == Sign::kZero)
-      return fail("shell " + S(s) + " (containing face " + S(tri_face[shell_tris[s][0]]) +
-                  ") encloses zero volume");
+      return "shell " + S(s) + " (containing face " + S(tri_face[shell_tris[s][0]]) + ") encloses zero volume";
     is_void[s] = v == Sign::kNegative;
   }
-  if (nshell == 1 ? is_void[0] : !total_volume_positive(P, tris))
-    return fail("faces point inward (total signed volume is not positive)");
+  if (shells == 1 ? is_void[0] : !total_volume_positive(P, tris))
+    return "faces point inward (total signed volume is not positive)";
+  return {};
+}
 
-  // Triangle adjacency (includes the diagonals inside split polygons). A diagonal that is
-  // also an edge elsewhere makes that edge non-manifold: a face touches a polygon's inside.
-  std::vector<std::array<uint32_t, 3>> neighbor(nt, {UINT32_MAX, UINT32_MAX, UINT32_MAX});
-  {
-    std::vector<HalfEdge> th(3 * size_t(nt));
-    for (uint32_t t = 0; t < nt; ++t)
-      for (int i = 0; i < 3; ++i) th[3 * t + i] = {ekey(tris[t][i], tris[t][(i + 1) % 3]), 3 * t + i};
-    tbb::parallel_sort(th.begin(), th.end(), [](const HalfEdge& a, const HalfEdge& b) {
-      return a.key != b.key ? a.key < b.key : a.id < b.id;
-    });
-    interruption_point();
-    for (size_t i = 0; i < th.size();) {
-      size_t j = i;
-      while (j < th.size() && th[j].key == th[i].key) ++j;
-      if (j - i != 2) {
-        uint32_t t = th[i].id / 3;
-        return fail("self-intersection: edge " + edge_name(uint32_t(th[i].key >> 32),
-                                                           uint32_t(th[i].key)) +
-                    " inside polygon face " + S(tri_face[t]) + " is also used by other faces");
-      }
-      neighbor[th[i].id / 3][th[i].id % 3] = th[i + 1].id / 3;
-      neighbor[th[i + 1].id / 3][th[i + 1].id % 3] = th[i].id / 3;
-      i = j;
+// Triangle adjacency (with the diagonals inside split polygons). A diagonal that is also
+// an edge elsewhere makes that edge non-manifold: a face touches a polygon's inside.
+std::string triangle_neighbors(const std::vector<Triangle>& tris, const std::vector<uint32_t>& tri_face,
+                               std::vector<std::array<uint32_t, 3>>& neighbor) {
+  const uint32_t nt = uint32_t(tris.size());
+  neighbor.assign(nt, {UINT32_MAX, UINT32_MAX, UINT32_MAX});
+  std::vector<HalfEdge> th(3 * size_t(nt));
+  for (uint32_t t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) th[3 * t + i] = {ekey(tris[t][i], tris[t][(i + 1) % 3]), 3 * t + i};
+  tbb::parallel_sort(th.begin(), th.end(), [](const HalfEdge& a, const HalfEdge& b) {
+    return a.key != b.key ? a.key < b.key : a.id < b.id;
+  });
+  interruption_point();
+  for (size_t i = 0; i < th.size();) {
+    size_t j = i;
+    while (j < th.size() && th[j].key == th[i].key) ++j;
+    if (j - i != 2) {
+      return "self-intersection: edge " + edge_name(uint32_t(th[i].key >> 32), uint32_t(th[i].key)) +
+             " inside polygon face " + S(tri_face[th[i].id / 3]) + " is also used by other faces";
     }
+    neighbor[th[i].id / 3][th[i].id % 3] = th[i + 1].id / 3;
+    neighbor[th[i + 1].id / 3][th[i + 1].id % 3] = th[i].id / 3;
+    i = j;
   }
+  return {};
+}
 
-  // 11. Self-intersections.
-  if (auto pair = mesh_internal::find_self_intersection(P, tris, tri_face)) {
-    return fail("self-intersection: faces " + S(pair->first) + " and " + S(pair->second) +
-                " intersect");
-  }
+}  // namespace
+
+// The checks in a fixed order (the numbers above); each refusal names the first offending
+// face, edge, vertex or shell.
+StatusOr<SolidMesh> build_solid(const RawMesh& raw) {
+  auto fail = [&](const std::string& what) { return InvalidArgument(raw.source + ": " + what); };
+  const auto& P = raw.points;
+  const auto& F = raw.faces;
+  if (std::string e = check_face_indices(P, F); !e.empty()) return fail(e);
+  // 3. Polygons planar and simple, split into triangles; 4. no zero-area faces.
+  std::vector<Triangle> tris;
+  std::vector<uint32_t> tri_face;
+  if (std::string e = triangulate_faces(P, F, tris, tri_face); !e.empty()) return fail(e);
+  // 5. No duplicate faces (the same vertex set).
+  if (auto pair = first_duplicate_faces(F))
+    return fail("faces " + S(pair->first) + " and " + S(pair->second) + " are duplicates (same vertices)");
+  const Corners corners(F);
+  if (std::string e = check_edges(corners); !e.empty()) return fail(e);
+  if (std::string e = check_vertex_fans(corners, P.size()); !e.empty()) return fail(e);
+  uint32_t shells = 0;
+  const std::vector<uint32_t> shell_of_face = shells_of_faces(corners, uint32_t(F.size()), shells);
+  std::vector<bool> is_void;
+  if (std::string e = orient_shells(P, tris, tri_face, shell_of_face, shells, is_void); !e.empty()) return fail(e);
+  std::vector<std::array<uint32_t, 3>> neighbor;
+  if (std::string e = triangle_neighbors(tris, tri_face, neighbor); !e.empty()) return fail(e);
+  // 11. No self-intersections.
+  if (auto pair = mesh_internal::find_self_intersection(P, tris, tri_face))
+    return fail("self-intersection: faces " + S(pair->first) + " and " + S(pair->second) + " intersect");
 
   SolidMesh m;
-  m.source = src;
+  m.source = raw.source;
   m.points = P;
   m.triangles = std::move(tris);
   m.triangle_face = std::move(tri_face);
-  m.input_face_count = nf;
+  m.input_face_count = uint32_t(F.size());
   m.neighbor = std::move(neighbor);
-  m.shell.resize(nt);
-  for (uint32_t t = 0; t < nt; ++t) m.shell[t] = shell_of_face[m.triangle_face[t]];
+  m.shell.resize(m.triangles.size());
+  for (uint32_t t = 0; t < m.triangles.size(); ++t) m.shell[t] = shell_of_face[m.triangle_face[t]];
   m.shell_is_void = std::move(is_void);
   m.groups = raw.groups;
   return m;

@@ -7,8 +7,8 @@
 #include <atomic>
 #include <cmath>
 
-#include "exact/interrupt.h"
 #include "exact/predicates.h"
+#include "parallel/interrupt.h"
 
 namespace gvm::mesh_internal {
 namespace {

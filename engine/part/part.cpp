@@ -16,8 +16,8 @@
 #include <sstream>
 
 #include "exact/filtered.h"
-#include "exact/interrupt.h"
 #include "exact/predicates.h"
+#include "parallel/interrupt.h"
 #include "part/convex_hull.h"
 #include "part/potentially_facing.h"
 
@@ -86,6 +86,176 @@ std::vector<uint32_t> sorted_union(size_t n, const Body& body) {
   return all;
 }
 
+// The solid mesh's topology as build_solid makes it (a caller may have built it by hand).
+Status check_topology(const SolidMesh& mesh, const std::string& src) {
+  const size_t nt = mesh.triangles.size();
+  if (nt == 0) return InvalidArgument(src + ": the part has no triangles");
+  if (mesh.neighbor.size() != nt || mesh.triangle_face.size() != nt || mesh.shell.size() != nt)
+    return FailedPrecondition(src + ": the solid mesh has no topology (use build_solid)");
+  for (size_t t = 0; t < nt; ++t) {
+    for (int i = 0; i < 3; ++i)
+      if (mesh.triangles[t][i] >= mesh.points.size() || mesh.neighbor[t][i] >= nt)
+        return FailedPrecondition(src + ": triangle " + std::to_string(t) + " has an invalid vertex or neighbor");
+    if (mesh.triangle_face[t] >= mesh.input_face_count || mesh.shell[t] >= mesh.shell_is_void.size())
+      return FailedPrecondition(src + ": triangle " + std::to_string(t) + " has an invalid input face or shell");
+  }
+  return Status();
+}
+
+// The user's face groups: valid, disjoint input faces; the group of each input face.
+struct FaceGroups {
+  std::vector<uint32_t> of_face;
+  std::vector<std::string> names;
+};
+
+StatusOr<FaceGroups> user_face_groups(const SolidMesh& mesh, const PartOptions& options, const std::string& src) {
+  FaceGroups groups{std::vector<uint32_t>(mesh.input_face_count, kNone), {}};
+  for (const auto& [name, faces] : options.face_groups) {
+    if (faces.empty()) return InvalidArgument(src + ": face group '" + name + "' is empty");
+    const uint32_t g = static_cast<uint32_t>(groups.names.size());
+    groups.names.push_back(name);
+    for (uint32_t f : faces) {
+      if (f >= mesh.input_face_count)
+        return InvalidArgument(src + ": face group '" + name + "' names face " + std::to_string(f) +
+                               ", but the part has " + std::to_string(mesh.input_face_count) + " faces");
+      if (groups.of_face[f] != kNone)
+        return InvalidArgument(src + ": face " + std::to_string(f) + " is in face groups '" +
+                               groups.names[groups.of_face[f]] + "' and '" + name + "'");
+      groups.of_face[f] = g;
+    }
+  }
+  return groups;
+}
+
+// Hull facets. A triangle is a hull facet iff every vertex lies on the closed negative
+// side of its plane, i.e. iff the maximum of n . x over the convex hull's vertices is
+// attained on the triangle's plane. The maximum is found exactly by hill climbing on the
+// hull graph, warm-started from the answer of a neighboring triangle. `used`: the vertices
+// of some triangle.
+StatusOr<std::vector<uint8_t>> hull_facets(const SolidMesh& m, const std::vector<uint32_t>& used,
+                                           const std::string& src) {
+  const part::ConvexHull hull = part::convex_hull(m.points, used);
+  if (hull.facets.empty()) return InvalidArgument(src + ": all vertices are coplanar, the part bounds no volume");
+  const size_t nt = m.triangles.size();
+  auto P = [&](uint32_t t, int i) -> const Point3& { return m.points[m.triangles[t][i]]; };
+  std::vector<uint8_t> on_hull(nt, 0);
+  // Breadth-first from each seed, one level at a time: the triangles of a level are
+  // decided in parallel, each warm-started from the answer of the one that reached it.
+  std::vector<uint32_t> start(nt, kNone), level, next, best;
+  for (uint32_t seed = 0; seed < nt; ++seed) {
+    if (start[seed] != kNone) continue;
+    start[seed] = hull.any_vertex;
+    level.assign(1, seed);
+    while (!level.empty()) {
+      best.resize(level.size());
+      tbb::parallel_for(size_t(0), level.size(), [&](size_t i) {
+        const uint32_t t = level[i];
+        best[i] = part::hull_extreme_vertex(hull, m.points, P(t, 0), P(t, 1), P(t, 2), start[t]);
+        on_hull[t] = exact::orient3d(P(t, 0), P(t, 1), P(t, 2), m.points[best[i]]) != Sign::kPositive;
+      });
+      interruption_point();  // triangles left undecided when cancelled
+      next.clear();
+      for (size_t i = 0; i < level.size(); ++i)
+        for (uint32_t u : m.neighbor[level[i]])
+          if (start[u] == kNone) {
+            start[u] = best[i];
+            next.push_back(u);
+          }
+      level.swap(next);
+    }
+  }
+  return on_hull;
+}
+
+// Concave regions: the edge-connected components of the triangles off the hull; the
+// region of each triangle (-1 on the hull).
+std::vector<ConcaveRegion> concave_regions(const SolidMesh& m, const std::vector<uint8_t>& on_hull,
+                                           std::vector<int32_t>& region) {
+  std::vector<ConcaveRegion> regions;
+  region.assign(m.triangles.size(), -1);
+  for (uint32_t seed = 0; seed < m.triangles.size(); ++seed) {
+    if (on_hull[seed] || region[seed] >= 0) continue;
+    ConcaveRegion r;
+    r.id = static_cast<uint32_t>(regions.size());
+    r.is_void = m.shell_is_void[m.shell[seed]];
+    region[seed] = static_cast<int32_t>(r.id);
+    r.triangles.push_back(seed);
+    for (size_t qi = 0; qi < r.triangles.size(); ++qi)
+      for (uint32_t u : m.neighbor[r.triangles[qi]])
+        if (!on_hull[u] && region[u] < 0) {
+          region[u] = static_cast<int32_t>(r.id);
+          r.triangles.push_back(u);
+        }
+    std::sort(r.triangles.begin(), r.triangles.end());
+    regions.push_back(std::move(r));
+  }
+  return regions;
+}
+
+// Features: the triangles of one input face, and of one user group, always together;
+// otherwise edge-connected triangles of one region (or of the hull) whose normals turn by
+// at most the feature angle across the edge between them.
+std::vector<Feature> features_of(const SolidMesh& m, const std::vector<uint8_t>& on_hull,
+                                 const std::vector<int32_t>& region, const FaceGroups& groups,
+                                 double feature_angle_degrees) {
+  const size_t nt = m.triangles.size();
+  const double theta = feature_angle_degrees * M_PI / 180.0;
+  const double k = theta >= M_PI ? -1.0 : std::cos(theta);
+  auto P = [&](uint32_t t, int i) -> const Point3& { return m.points[m.triangles[t][i]]; };
+  std::vector<uint32_t> tri_group(nt, kNone);
+  for (uint32_t t = 0; t < nt; ++t) tri_group[t] = groups.of_face[m.triangle_face[t]];
+  UnionFind uf(nt);
+  std::vector<uint32_t> face_first(m.input_face_count, kNone), group_first(groups.names.size(), kNone);
+  for (uint32_t t = 0; t < nt; ++t) {
+    const uint32_t f = m.triangle_face[t];
+    if (face_first[f] == kNone) face_first[f] = t; else uf.unite(face_first[f], t);
+    const uint32_t g = tri_group[t];
+    if (g != kNone) {
+      if (group_first[g] == kNone) group_first[g] = t; else uf.unite(group_first[g], t);
+    }
+  }
+  // The edges whose normals turn by at most the feature angle, each from its smaller
+  // triangle, tested in parallel; united after (the roots do not depend on the order).
+  std::vector<std::array<bool, 3>> smooth(nt, {false, false, false});
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nt, 1024), [&](const tbb::blocked_range<uint32_t>& range) {
+    for (uint32_t t = range.begin(); t != range.end(); ++t) {
+      if (tri_group[t] != kNone) continue;
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t u = m.neighbor[t][i];
+        if (u <= t || tri_group[u] != kNone || m.triangle_face[u] == m.triangle_face[t]) continue;
+        if (on_hull[t] != on_hull[u] || region[t] != region[u]) continue;
+        smooth[t][i] = exact::normals_within(P(t, 0), P(t, 1), P(t, 2), P(u, 0), P(u, 1), P(u, 2), k);
+      }
+    }
+  });
+  interruption_point();
+  for (uint32_t t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i)
+      if (smooth[t][i]) uf.unite(t, m.neighbor[t][i]);
+  // Roots are the smallest members, so features come in order of smallest triangle.
+  std::vector<Feature> features;
+  std::vector<uint32_t> feature_of_root(nt, kNone);
+  for (uint32_t t = 0; t < nt; ++t) {
+    const uint32_t r = uf.find(t);
+    if (feature_of_root[r] == kNone) {
+      feature_of_root[r] = static_cast<uint32_t>(features.size());
+      Feature f;
+      f.id = feature_of_root[r];
+      f.automatic = tri_group[t] == kNone;
+      f.name = f.automatic ? "F" + std::to_string(f.id) : groups.names[tri_group[t]];
+      f.on_hull = true;
+      features.push_back(std::move(f));
+    }
+    Feature& f = features[feature_of_root[r]];
+    f.triangles.push_back(t);
+    if (!on_hull[t]) {
+      if (f.on_hull) f.region = region[t];
+      f.on_hull = false;
+    }
+  }
+  return features;
+}
+
 }  // namespace
 
 struct Part::Impl {
@@ -113,48 +283,19 @@ const std::vector<ConcaveRegion>& Part::regions() const { return impl_->regions;
 const std::vector<Feature>& Part::features() const { return impl_->features; }
 
 StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
-  auto impl = std::make_unique<Impl>();
-  const size_t nt = mesh.triangles.size();
   const std::string src = mesh.source.empty() ? std::string("part") : mesh.source;
-  if (nt == 0) return InvalidArgument(src + ": the part has no triangles");
-  if (mesh.neighbor.size() != nt || mesh.triangle_face.size() != nt || mesh.shell.size() != nt)
-    return FailedPrecondition(src + ": the solid mesh has no topology (use build_solid)");
-  for (size_t t = 0; t < nt; ++t) {
-    for (int i = 0; i < 3; ++i)
-      if (mesh.triangles[t][i] >= mesh.points.size() || mesh.neighbor[t][i] >= nt)
-        return FailedPrecondition(src + ": triangle " + std::to_string(t) +
-                                  " has an invalid vertex or neighbor");
-    if (mesh.triangle_face[t] >= mesh.input_face_count || mesh.shell[t] >= mesh.shell_is_void.size())
-      return FailedPrecondition(src + ": triangle " + std::to_string(t) +
-                                " has an invalid input face or shell");
-  }
-  // User groups: valid, disjoint input faces.
-  std::vector<uint32_t> face_group(mesh.input_face_count, kNone);
-  std::vector<std::string> group_names;
-  for (const auto& [name, faces] : options.face_groups) {
-    if (faces.empty()) return InvalidArgument(src + ": face group '" + name + "' is empty");
-    uint32_t g = static_cast<uint32_t>(group_names.size());
-    group_names.push_back(name);
-    for (uint32_t f : faces) {
-      if (f >= mesh.input_face_count)
-        return InvalidArgument(src + ": face group '" + name + "' names face " +
-                               std::to_string(f) + ", but the part has " +
-                               std::to_string(mesh.input_face_count) + " faces");
-      if (face_group[f] != kNone)
-        return InvalidArgument(src + ": face " + std::to_string(f) + " is in face groups '" +
-                               group_names[face_group[f]] + "' and '" + name + "'");
-      face_group[f] = g;
-    }
-  }
+  if (Status s = check_topology(mesh, src); !s.ok()) return s;
+  StatusOr<FaceGroups> groups = user_face_groups(mesh, options, src);
+  if (!groups.ok()) return groups.status();
 
+  auto impl = std::make_unique<Impl>();
   Impl& I = *impl;
   I.mesh = std::move(mesh);
   const SolidMesh& m = I.mesh;
-  const size_t nv = m.points.size();
+  const size_t nt = m.triangles.size(), nv = m.points.size();
   for (const Point3& p : m.points) {
     I.coordinate_bound = std::max({I.coordinate_bound, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
   }
-
   // Adjacency: vertex -> triangles, vertex -> neighbor vertices (each directed triangle
   // edge (a, b) gives b as a neighbor of a; on a closed manifold every edge appears once
   // in each direction).
@@ -170,124 +311,15 @@ StatusOr<Part> Part::analyze(SolidMesh mesh, const PartOptions& options) {
     build_csr(nv, vt, I.vt_offset, I.vt);
     build_csr(nv, vv, I.vv_offset, I.vv);
   }
-
-  // 1. Hull facets. A triangle is a hull facet iff every vertex lies on the closed
-  // negative side of its plane, i.e. iff the maximum of n . x over the convex hull's
-  // vertices is attained on the triangle's plane. The maximum is found exactly by hill
-  // climbing on the hull graph, warm-started from the answer of a neighboring triangle.
-  {
-    std::vector<uint32_t> use;
-    use.reserve(nv);
-    for (uint32_t v = 0; v < nv; ++v)
-      if (I.vt_offset[v + 1] > I.vt_offset[v]) use.push_back(v);
-    part::ConvexHull hull = part::convex_hull(m.points, use);
-    if (hull.facets.empty())
-      return InvalidArgument(src + ": all vertices are coplanar, the part bounds no volume");
-    I.hull.assign(nt, 0);
-    // Breadth-first from each seed, one level at a time: the triangles of a level are
-    // decided in parallel, each warm-started from the answer of the one that reached it.
-    std::vector<uint32_t> start(nt, kNone), level, next, best;
-    for (uint32_t seed = 0; seed < nt; ++seed) {
-      if (start[seed] != kNone) continue;
-      start[seed] = hull.any_vertex;
-      level.assign(1, seed);
-      while (!level.empty()) {
-        best.resize(level.size());
-        tbb::parallel_for(size_t(0), level.size(), [&](size_t i) {
-          const uint32_t t = level[i];
-          best[i] = part::hull_extreme_vertex(hull, m.points, I.P(t, 0), I.P(t, 1), I.P(t, 2),
-                                              start[t]);
-          I.hull[t] = exact::orient3d(I.P(t, 0), I.P(t, 1), I.P(t, 2), m.points[best[i]]) !=
-                      Sign::kPositive;
-        });
-        interruption_point();  // triangles left undecided when cancelled
-        next.clear();
-        for (size_t i = 0; i < level.size(); ++i)
-          for (uint32_t u : m.neighbor[level[i]])
-            if (start[u] == kNone) {
-              start[u] = best[i];
-              next.push_back(u);
-            }
-        level.swap(next);
-      }
-    }
-  }
-
-  // 2. Concave regions: edge-connected components of non-hull triangles.
-  I.region.assign(nt, -1);
-  for (uint32_t seed = 0; seed < nt; ++seed) {
-    if (I.hull[seed] || I.region[seed] >= 0) continue;
-    ConcaveRegion r;
-    r.id = static_cast<uint32_t>(I.regions.size());
-    r.is_void = m.shell_is_void[m.shell[seed]];
-    I.region[seed] = static_cast<int32_t>(r.id);
-    r.triangles.push_back(seed);
-    for (size_t qi = 0; qi < r.triangles.size(); ++qi)
-      for (uint32_t u : m.neighbor[r.triangles[qi]])
-        if (!I.hull[u] && I.region[u] < 0) {
-          I.region[u] = static_cast<int32_t>(r.id);
-          r.triangles.push_back(u);
-        }
-    std::sort(r.triangles.begin(), r.triangles.end());
-    I.regions.push_back(std::move(r));
-  }
-
-  // 3. Features.
-  {
-    const double theta = options.feature_angle_degrees * M_PI / 180.0;
-    const double k = theta >= M_PI ? -1.0 : std::cos(theta);
-    std::vector<uint32_t> tri_group(nt, kNone);
-    for (uint32_t t = 0; t < nt; ++t) tri_group[t] = face_group[m.triangle_face[t]];
-    UnionFind uf(nt);
-    // Triangles of one input face, and of one user group, always belong together.
-    std::vector<uint32_t> face_first(m.input_face_count, kNone), group_first(group_names.size(), kNone);
-    for (uint32_t t = 0; t < nt; ++t) {
-      uint32_t f = m.triangle_face[t];
-      if (face_first[f] == kNone) face_first[f] = t; else uf.unite(face_first[f], t);
-      uint32_t g = tri_group[t];
-      if (g != kNone) {
-        if (group_first[g] == kNone) group_first[g] = t; else uf.unite(group_first[g], t);
-      }
-    }
-    // The edges whose normals turn by at most the feature angle, each from its smaller
-    // triangle, tested in parallel; united after (the roots do not depend on the order).
-    std::vector<std::array<bool, 3>> smooth(nt, {false, false, false});
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, nt, 1024), [&](const tbb::blocked_range<uint32_t>& range) {
-      for (uint32_t t = range.begin(); t != range.end(); ++t) {
-        if (tri_group[t] != kNone) continue;
-        for (int i = 0; i < 3; ++i) {
-          const uint32_t u = m.neighbor[t][i];
-          if (u <= t || tri_group[u] != kNone || m.triangle_face[u] == m.triangle_face[t]) continue;
-          if (I.hull[t] != I.hull[u] || I.region[t] != I.region[u]) continue;
-          smooth[t][i] = exact::normals_within(I.P(t, 0), I.P(t, 1), I.P(t, 2), I.P(u, 0), I.P(u, 1), I.P(u, 2), k);
-        }
-      }
-    });
-    interruption_point();
-    for (uint32_t t = 0; t < nt; ++t)
-      for (int i = 0; i < 3; ++i)
-        if (smooth[t][i]) uf.unite(t, m.neighbor[t][i]);
-    // Roots are the smallest members, so features come in order of smallest triangle.
-    std::vector<uint32_t> feature_of_root(nt, kNone);
-    for (uint32_t t = 0; t < nt; ++t) {
-      uint32_t r = uf.find(t);
-      if (feature_of_root[r] == kNone) {
-        feature_of_root[r] = static_cast<uint32_t>(I.features.size());
-        Feature f;
-        f.id = feature_of_root[r];
-        f.automatic = tri_group[t] == kNone;
-        f.name = f.automatic ? "F" + std::to_string(f.id) : group_names[tri_group[t]];
-        f.on_hull = true;
-        I.features.push_back(std::move(f));
-      }
-      Feature& f = I.features[feature_of_root[r]];
-      f.triangles.push_back(t);
-      if (!I.hull[t]) {
-        if (f.on_hull) f.region = I.region[t];
-        f.on_hull = false;
-      }
-    }
-  }
+  std::vector<uint32_t> used;
+  used.reserve(nv);
+  for (uint32_t v = 0; v < nv; ++v)
+    if (I.vt_offset[v + 1] > I.vt_offset[v]) used.push_back(v);
+  StatusOr<std::vector<uint8_t>> hull = hull_facets(m, used, src);
+  if (!hull.ok()) return hull.status();
+  I.hull = std::move(*hull);
+  I.regions = concave_regions(m, I.hull, I.region);
+  I.features = features_of(m, I.hull, I.region, *groups, options.feature_angle_degrees);
   return Part(std::move(impl));
 }
 

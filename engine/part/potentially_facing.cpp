@@ -7,8 +7,8 @@
 #include <map>
 
 #include "exact/exact_vec.h"
-#include "exact/interrupt.h"
 #include "exact/predicates.h"
+#include "parallel/interrupt.h"
 
 namespace gvm::part_internal {
 namespace {
@@ -21,6 +21,9 @@ constexpr size_t kMinPlaneTriangles = 16;
 // value u . x + w may lie from the exact signed distance for any |x| <= the bound it was
 // made with. Conditioning: the rounded cross product of two edges turns by about
 // eps |e1| |e2| / |e1 x e2| radians, a sliver's by much more (its slack is then infinite).
+// Doubles outside exact/ on purpose: the slack only decides which subtrees are skipped as
+// certainly behind (condition (ii) false for all of them), and every triangle not skipped
+// is decided by the exact predicates; a larger slack skips less and gives the same O_S.
 struct ApproxPlane {
   double u[4];  // u[3] = w
   double slack;

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 
 #include "sphere/union_find.h"
 

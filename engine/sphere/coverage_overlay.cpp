@@ -4,7 +4,7 @@
 #include <iterator>
 #include <unordered_map>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/arrangement.h"
 #include "sphere/cell_witness.h"
 #include "sphere/image_overlay.h"

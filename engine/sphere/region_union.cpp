@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/image_overlay.h"
 
 namespace gvm::sphere {

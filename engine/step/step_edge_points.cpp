@@ -71,26 +71,41 @@ Splits splits_of(const std::vector<std::vector<uint32_t>>& before, Weld& weld) {
 }
 
 Polygons fan_split(const Polygons& triangles, const Splits& splits, Weld& weld) {
-  std::vector<std::array<uint32_t, 3>> work;
+  // Each piece carries which of its edges are still a whole edge of BRepMesh's triangle:
+  // only those are looked up. The fan's own edges (pieces of the split edge, the diagonals
+  // to the apex) never are, so that a file whose welded points make the splits refer to
+  // each other in a cycle cannot fan without end: a triangle splits at most three times.
+  struct Piece {
+    std::array<uint32_t, 3> v;
+    std::array<bool, 3> whole;  // edge k: v[k] -> v[k + 1]
+  };
+  std::vector<Piece> work;
   for (const auto& t : triangles) {
     if (t.size() != 3) continue;
-    work.push_back({weld.find(t[0]), weld.find(t[1]), weld.find(t[2])});
+    work.push_back({{weld.find(t[0]), weld.find(t[1]), weld.find(t[2])}, {true, true, true}});
   }
   Polygons out;
   while (!work.empty()) {
-    const std::array<uint32_t, 3> t = work.back();
+    const Piece t = work.back();
     work.pop_back();
     bool split = false;
     for (int k = 0; k < 3 && !split; ++k) {
-      auto it = splits.find({t[k], t[(k + 1) % 3]});
+      if (!t.whole[k]) continue;
+      auto it = splits.find({t.v[k], t.v[(k + 1) % 3]});
       if (it == splits.end()) continue;
-      const uint32_t apex = t[(k + 2) % 3];
-      uint32_t prev = t[k];
-      for (uint32_t m : it->second) work.push_back({prev, m, apex}), prev = m;
-      work.push_back({prev, t[(k + 1) % 3], apex});
+      const uint32_t apex = t.v[(k + 2) % 3];
+      uint32_t prev = t.v[k];
+      // The first piece keeps the edge apex -> v[k], the last the edge v[k + 1] -> apex.
+      bool first = true;
+      for (uint32_t m : it->second) {
+        work.push_back({{prev, m, apex}, {false, false, first && t.whole[(k + 2) % 3]}});
+        prev = m;
+        first = false;
+      }
+      work.push_back({{prev, t.v[(k + 1) % 3], apex}, {false, t.whole[(k + 1) % 3], first && t.whole[(k + 2) % 3]}});
       split = true;
     }
-    if (!split) out.push_back({t[0], t[1], t[2]});
+    if (!split) out.push_back({t.v[0], t.v[1], t.v[2]});
   }
   return out;
 }

@@ -2,7 +2,7 @@
 // countersink or counterbore, a drill point or flat bottom -- proposed as one feature.
 //
 // A CAD proposal, not a geometric decision: the GVMs stay exact whatever the grouping. The
-// rule is kept simple enough to state in the README:
+// rule is kept simple enough to state in docs/step.md:
 //   1. a hole face is a cylinder or cone whose material lies outside it (its outward
 //      normal points towards the axis);
 //   2. hole faces that share an edge and have the same axis line are one hole;

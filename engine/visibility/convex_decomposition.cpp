@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/local_visibility_map.h"
 #include "visibility/direction_window.h"
 

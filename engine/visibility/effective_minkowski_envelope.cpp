@@ -7,8 +7,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "exact/interrupt.h"
 #include "exact/predicates.h"
+#include "parallel/interrupt.h"
 #include "visibility/direction_window.h"
 #include "visibility/surface_topology.h"
 

@@ -11,7 +11,7 @@
 #include <unordered_map>
 #include <utility>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/arrangement.h"
 #include "sphere/d3.h"
 #include "sphere/image_overlay.h"
@@ -131,7 +131,11 @@ std::optional<Occlusion> envelope_occlusion(const SolidMesh& mesh, std::span<con
     for (auto [q, p] : f.vertices) v.push_back(sum.at(q, p));
     faces.push_back(std::move(v));
   }
-  const auto [kept, windows_met, redundant] = faces_that_matter(faces, clip);
+  // Named, not a structured binding: clang 14 (the fuzz preset) cannot capture those.
+  const FacesThatMatter matter = faces_that_matter(faces, clip);
+  const std::vector<uint32_t>& kept = matter.kept;
+  const std::vector<uint64_t>& windows_met = matter.windows_met;
+  const std::vector<uint8_t>& redundant = matter.redundant;
   spdlog::debug("global occlusion: {} of {} envelope faces lie inside larger ones or miss the {} windows "
                 "around the LVM", faces.size() - kept.size(), faces.size(), clip.size());
   // The open cells are the faces that are not redundant: a redundant face's open inside
@@ -230,7 +234,7 @@ Occlusion envelope_occlusion_in_passes(const SolidMesh& mesh, std::span<const ui
                                        const DirectionWindow& window, std::span<const ClipWindow> clip,
                                        std::vector<ExactVec>& circles, const std::vector<ExactVec>& points,
                                        GlobalOcclusionStatistics* stats) {
-  // Measured on the shared parts (README, "A window from a first bound"): below 2,048
+  // Measured on the shared parts (docs/performance-history.md, "A window from a first bound"): below 2,048
   // occluders the first pass costs more than the second saves on the Prusa parts.
   constexpr size_t kLargeO = 2048, kFirstPass = 64;
   constexpr double kLeftAtMost = 0.5;
@@ -511,7 +515,7 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
       edge_visible[e] = decide(arc, visible_on_seam(arc, open_cells, probe));
     }
   }
-  auto vertex_in = [&](uint32_t v) {
+  auto vertex_in = [&, &open_cells = open_cells](uint32_t v) {
     const auto& vert = arr.vertices()[v];
     bool on_lvm = arr.vertex_has_point(v, kLvm);  // a point or on an arc: not in a 2-cell
     bool in_lvm = on_lvm;

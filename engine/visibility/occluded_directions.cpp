@@ -10,7 +10,7 @@
 #include <iterator>
 #include <numeric>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/box_tree.h"
 
 namespace gvm {
@@ -20,8 +20,8 @@ constexpr size_t kGroupCells = 128;
 // A group whose border arcs overlap densely is split in halves down to this size, their
 // regions merged like the groups': deep in a union, arcs cross many others, and an
 // arrangement of all of them holds every crossing, most of which no merged region keeps.
-// Measured on the slowest surfaces of four shared parts (instructions): 16 and 32, -10 to
-// -17% on prusa_extruder-idler and prusa_y-rod-holder, within 0.5% elsewhere.
+// 16 and 32 were the best measured on the slowest surfaces of four shared parts
+// (docs/performance-history.md).
 constexpr size_t kSmallestGroup = 16;
 constexpr size_t kDensePairs = 32;  // overlapping boxes per arc
 

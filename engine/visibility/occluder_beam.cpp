@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/d3.h"
 
 namespace gvm {
@@ -70,7 +70,8 @@ class LvmBound {
   }
 
   // asin and acos are monotone, so the extreme sines and cosines are found first and each
-  // kind of cell costs one call: asin per normal was 8% of prusa_y-motor-holder.
+  // kind of cell costs one call (asin per normal showed in profiles:
+  // docs/performance-history.md).
   double distance_lower_bound(const D3& w) const {
     if (full_) return 0;
     double best = 4;

@@ -8,7 +8,7 @@
 #include <numeric>
 #include <optional>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/box_tree.h"
 #include "sphere/d3.h"
 #include "visibility/face_estimate.h"

@@ -13,7 +13,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/arc_intervals.h"
 #include "sphere/d3.h"
 #include "sphere/point_in_face.h"
@@ -299,9 +299,9 @@ std::vector<uint32_t> OcclusionProbe::blockers(const ExactVec& u) const {
 OcclusionProbe::PrismCover OcclusionProbe::prism_cover(const sphere::Arc& open_arc,
                                                       const std::vector<bool>& in_plane) const {
   // Each pair's span along the arc in doubles first: most lie inside wider ones and need no
-  // exact map (prusa_adapter-printer: 46,667 maps for one arc). A span that certainly
-  // holds the whole arc ends the search; should its exact map not confirm it (it always
-  // does), every pair is looked at.
+  // exact map (tens of thousands of maps for one arc without it: docs/performance-history.md).
+  // A span that certainly holds the whole arc ends the search; should its exact map not
+  // confirm it (it always does), every pair is looked at.
   const ArcSpans frame(open_arc);
   const double a = frame.start() - ArcSpans::kEndError, b = frame.end() + ArcSpans::kEndError;
   struct Candidate {
@@ -426,7 +426,10 @@ OcclusionProbe::Strips OcclusionProbe::strips_along(std::span<const uint32_t> in
   };
   tbb::concurrent_vector<Found> found;
   uint32_t plane_index = 0;
-  for (const auto& [plane, triangles] : strip_planes(mesh_, in_plane)) {
+  // Not a structured binding: clang 14 (the fuzz preset) cannot capture those.
+  for (const auto& strip_plane : strip_planes(mesh_, in_plane)) {
+    const auto& plane = strip_plane.first;
+    const auto& triangles = strip_plane.second;
     const WindowRows s_min(&window, triangles.size(), window.extremes(mesh_, triangles, false),
                            WindowRows::Side::surface);
     tbb::concurrent_vector<std::pair<uint32_t, uint32_t>> pairs;

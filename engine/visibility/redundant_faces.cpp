@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-#include "exact/interrupt.h"
+#include "parallel/interrupt.h"
 #include "sphere/d3.h"
 
 namespace gvm {
@@ -163,8 +163,8 @@ class CoveredCells {
   // side's value is linear along the line, so solving for the coordinate bounds the run,
   // and its ends are checked by the test itself; the corners between have every side's
   // value at least the smaller of the ends', up to a rounding far below the slack. One
-  // pass over the sides per grid line instead of one per corner (the marking was 7% of
-  // prusa_y-rod-holder).
+  // pass over the sides per grid line instead of one per corner (the marking per corner
+  // showed in profiles: docs/performance-history.md).
   static Run corners_inside(const Estimate& f, const CubeFace& c, const Rect& r, int j) {
     const double t = grid_line(j);
     double lo = -INFINITY, hi = INFINITY;

@@ -283,7 +283,7 @@ SeamCandidates seam_candidates(const SolidMesh& mesh, std::span<const uint32_t> 
   };
   std::vector<Found> at_corner(occ.corners.size()), at_edge(occ.edges.size());
   tbb::parallel_for(size_t{0}, occ.corners.size(), [&](size_t i) {
-    const auto& [q, triangle] = occ.corners[i];
+    const uint32_t q = occ.corners[i].first, triangle = occ.corners[i].second;  // not bound: clang 14 captures no bindings
     std::optional<Fan> star_q;  // built for the first contact that gets that far
     auto fan_q = [&]() -> const Fan& { return star_q ? *star_q : star_q.emplace(star(mesh, triangle, q)); };
     const std::vector<double> row = o_row({q});

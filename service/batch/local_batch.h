@@ -9,7 +9,7 @@
 namespace gvm::batch {
 
 // The memory a part's analysis and plan are expected to need at their peak, estimated
-// from its file size (measured on the shared parts, see the README).
+// from its file size (measured on the shared parts, see docs/batches.md).
 uint64_t estimated_memory(const BatchItem& item);
 
 // Runs every item (until SIGINT or SIGTERM), shows progress on standard output, writes

@@ -297,6 +297,197 @@ std::string witness(const gvm::oracle::RayOracle& oracle, const gvm::SolidMesh& 
   return "no witness";
 }
 
+// The features and regions the options ask for, each with its own random stream.
+std::vector<Surface> surfaces_of(const gvm::Part& part, const Options& opt) {
+  std::vector<Surface> surfaces;
+  if (opt.features) {
+    long n = 0;
+    for (const gvm::Feature& f : part.features()) {
+      if (!opt.only_features.empty() && !opt.only_features.count(f.id)) continue;
+      if (opt.max_features >= 0 && n >= opt.max_features) break;
+      ++n;
+      surfaces.push_back({"feature " + std::to_string(f.id) + " '" + f.name + "'", f.triangles,
+                          (uint64_t{1} << 32) + f.id});
+    }
+  }
+  if (opt.regions) {
+    long n = 0;
+    for (const gvm::ConcaveRegion& r : part.regions()) {
+      if (!opt.only_regions.empty() && !opt.only_regions.count(r.id)) continue;
+      if (opt.max_features >= 0 && n >= opt.max_features) break;
+      ++n;
+      surfaces.push_back({"region " + std::to_string(r.id), r.triangles, (uint64_t{2} << 32) + r.id});
+    }
+  }
+  return surfaces;
+}
+
+// Reference w outside the GVM, at a margin from its boundary: -n_F of a triangle F of S
+// (self-occluded), else a random self-occluded direction.
+std::optional<Vec> reference_outside(const Image& im, const gvm::SolidMesh& m, const Surface& s, double margin,
+                                     std::mt19937_64& rng) {
+  std::vector<Vec> normals;
+  for (uint32_t t : s.triangles) {
+    const auto& tri = m.triangles[t];
+    const auto& a = m.points[tri[0]];
+    const auto& b = m.points[tri[1]];
+    const auto& c = m.points[tri[2]];
+    normals.push_back(normalized(cross(Vec{b.x - a.x, b.y - a.y, b.z - a.z}, Vec{c.x - a.x, c.y - a.y, c.z - a.z})));
+  }
+  auto self_occluded = [&](const Vec& v) {
+    for (const Vec& n : normals) if (dot(v, n) < -1e-9) return true;
+    return false;
+  };
+  for (std::size_t i = 0; i < normals.size() && i < 64; ++i) {
+    const Vec c = neg(normals[i]);
+    if (distance_to_boundary(im, c) > margin) return c;
+  }
+  for (int i = 0; i < 1000; ++i) {
+    const Vec c = random_direction(rng);
+    if (self_occluded(c) && distance_to_boundary(im, c) > margin) return c;
+  }
+  return std::nullopt;
+}
+
+// The directions one surface is checked along: the probes, uniform ones, as many again
+// near the corners of the GVM and of the LVM (where the answer changes: uniform directions
+// alone rarely land in a small GVM). check(u, probe) for each.
+template <class Check>
+void sweep_directions(const Options& opt, const Image& im, const gvm::sphere::SphericalImage& lvm, std::mt19937_64& rng,
+                      const Check& check) {
+  for (const Vec& u : opt.probes) check(u, true);
+  for (int i = 0; i < opt.directions; ++i) check(random_direction(rng), false);
+  gvm::v1::SphericalImage lvm_proto;
+  gvm::io::to_proto(lvm, &lvm_proto);
+  std::vector<Vec> anchors = corners(im);
+  for (const Vec& v : corners(image_of(lvm_proto))) anchors.push_back(v);
+  for (int i = 0; i < opt.directions && !anchors.empty(); ++i) {
+    const Vec& a = anchors[rng() % anchors.size()];
+    const Vec t = normalized(cross(a, random_direction(rng)));
+    const double theta = std::uniform_real_distribution<double>(0, 10 * kDeg)(rng);
+    check(normalized(add(scale(a, std::cos(theta)), scale(t, std::sin(theta)))), false);
+  }
+}
+
+// The GVM's own arcs (their midpoints) and points against the robust oracle (see the top
+// of the file); the disagreements.
+long check_lower_cells(const std::string& path, const Surface& s, const Image& im, const gvm::SolidMesh& m,
+                       const gvm::oracle::RayOracle& robust, PartTotals& totals) {
+  std::vector<Vec> cells = im.points;
+  for (const auto& arc : im.arcs) {
+    for (std::size_t i = 0; i + 1 < arc.size(); ++i) cells.push_back(normalized(add(arc[i], arc[i + 1])));
+  }
+  const std::vector<Vec> robust_points = cells.empty() ? std::vector<Vec>{} : robust.sample_points(s.triangles);
+  long dis = 0;
+  for (const Vec& u : cells) {
+    ++totals.cells;
+    if (robust.surface_visible(s.triangles, robust_points, u)) continue;
+    ++dis;
+    std::printf("    DISAGREE part=%s %s |S|=%zu u=(%.17g, %.17g, %.17g) engine=visible (an arc or "
+                "point of the GVM) oracle=blocked robustly [%s]\n",
+                path.c_str(), s.label.c_str(), s.triangles.size(), u[0], u[1], u[2],
+                witness(robust, m, s, robust_points, u).c_str());
+  }
+  return dis;
+}
+
+// One surface: its GVM, then every direction of sweep_directions against the ray oracle.
+void sweep_surface(const std::string& path, const gvm::Part& part, const Surface& s, const Options& opt,
+                   const gvm::oracle::RayOracle& oracle, const gvm::oracle::RayOracle& robust, PartTotals& totals) {
+  const gvm::SolidMesh& m = part.mesh();
+  const double margin = opt.margin_deg * kDeg;
+  ++totals.surfaces;
+  std::printf("  %s |S|=%zu: computing GVM...\n", s.label.c_str(), s.triangles.size());
+  std::fflush(stdout);
+  const auto t0 = std::chrono::steady_clock::now();
+  gvm::SurfaceVisibility vis = gvm::compute_surface_visibility(part, s.triangles, true, opt.method);
+  const double gvm_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!vis.gvm) {
+    std::printf("  %s: skipped, no GVM (%s) [%.2fs]\n", s.label.c_str(), kind_name(vis.status), gvm_seconds);
+    ++totals.surfaces_skipped;
+    return;
+  }
+  gvm::v1::SphericalImage proto;
+  gvm::io::to_proto(*vis.gvm, &proto);
+  const Image im = image_of(proto);
+  std::size_t loop_edges = 0;
+  for (const auto& p : im.polygons) for (const auto& l : p) loop_edges += l.size();
+
+  std::mt19937_64 rng(opt.seed * 0x9E3779B97F4A7C15ull ^ s.stream);
+  std::optional<Vec> w;
+  if (!im.full) {
+    w = reference_outside(im, m, s, margin, rng);
+    if (!w) {
+      std::printf("  %s: skipped, no reference direction outside the GVM found\n", s.label.c_str());
+      ++totals.surfaces_skipped;
+      return;
+    }
+  }
+  ++totals.surfaces_checked;
+  const std::vector<Vec> points = oracle.sample_points(s.triangles);
+  long tested = 0, skipped = 0, dis = 0, visible_count = 0;
+  auto check = [&](const Vec& u, bool probe) {
+    const double d = distance_to_boundary(im, u);
+    if (!probe && d < margin) {
+      ++skipped;
+      return;
+    }
+    const Vec ue = opt.negate ? neg(u) : u;
+    // Inside a 2-cell, or (only reachable by probes: random directions keep the margin)
+    // on a 1-cell or 0-cell.
+    std::optional<bool> e = im.full ? std::optional<bool>(true) : inside(im, ue, *w, rng);
+    if (e && !*e && distance_to_lower_cells(im, ue) < 1e-9) e = true;
+    const bool o = oracle.surface_visible(s.triangles, points, u);
+    if (!e) {
+      ++totals.undecided;
+      std::printf("    UNDECIDED %s u=(%.17g, %.17g, %.17g): parity paths ambiguous\n", s.label.c_str(), u[0], u[1],
+                  u[2]);
+      return;
+    }
+    ++tested;
+    visible_count += o;
+    if (probe) {
+      std::printf("    PROBE %s u=(%.17g, %.17g, %.17g) engine=%d oracle=%d dist=%.4f deg%s\n", s.label.c_str(), u[0],
+                  u[1], u[2], int(*e), int(o), d / kDeg,
+                  o ? "" : (" [" + witness(oracle, m, s, points, u) + "]").c_str());
+    }
+    if (*e == o) {
+      ++totals.agree;
+      return;
+    }
+    ++dis;
+    std::printf(
+        "    DISAGREE part=%s %s |S|=%zu u=(%.17g, %.17g, %.17g) engine=%s oracle=%s "
+        "dist_to_boundary=%.4f deg seed=%llu%s\n",
+        path.c_str(), s.label.c_str(), s.triangles.size(), u[0], u[1], u[2], *e ? "visible" : "blocked",
+        o ? "visible" : "blocked", d / kDeg, static_cast<unsigned long long>(opt.seed),
+        o ? "" : (" [" + witness(oracle, m, s, points, u) + "]").c_str());
+  };
+  const auto t1 = std::chrono::steady_clock::now();
+  sweep_directions(opt, im, vis.lvm, rng, check);
+  dis += check_lower_cells(path, s, im, m, robust, totals);
+  const double oracle_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  totals.tested += tested;
+  totals.visible += visible_count;
+  totals.skipped_near_boundary += skipped;
+  totals.disagree += dis;
+  std::printf(
+      "  %s |S|=%zu: %s, GVM %s (area %.4f sr, %zu polygons, %zu loop edges, %zu arcs, %zu "
+      "points), %zu sample points; tested %ld (oracle visible %ld), skipped %ld, "
+      "disagreements %ld [GVM %.2fs, oracle %.2fs]\n",
+      s.label.c_str(), s.triangles.size(), kind_name(vis.status),
+      im.full ? "full sphere"
+              : (im.polygons.empty() && im.arcs.empty() && im.points.empty() ? "empty" : "non-empty"),
+      im.area, im.polygons.size(), loop_edges, im.arcs.size(), im.points.size(), points.size(), tested,
+      visible_count, skipped, dis, gvm_seconds, oracle_seconds);
+  if (opt.verbose) {
+    std::printf("    description: %s\n    triangles:", im.description.c_str());
+    for (uint32_t t : s.triangles) std::printf(" %u", t);
+    std::printf("\n");
+  }
+  std::fflush(stdout);
+}
+
 PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed) {
   PartTotals totals;
   auto mesh = gvm::load_solid(path);
@@ -323,177 +514,7 @@ PartTotals sweep_part(const std::string& path, const Options& opt, bool* failed)
   const gvm::oracle::RayOracle robust(m, robust_options);
   std::printf("%s: %zu triangles, %zu features, %zu regions\n", path.c_str(), m.triangles.size(),
               part->features().size(), part->regions().size());
-
-  std::vector<Surface> surfaces;
-  if (opt.features) {
-    long n = 0;
-    for (const gvm::Feature& f : part->features()) {
-      if (!opt.only_features.empty() && !opt.only_features.count(f.id)) continue;
-      if (opt.max_features >= 0 && n >= opt.max_features) break;
-      ++n;
-      surfaces.push_back({"feature " + std::to_string(f.id) + " '" + f.name + "'", f.triangles,
-                          (uint64_t{1} << 32) + f.id});
-    }
-  }
-  if (opt.regions) {
-    long n = 0;
-    for (const gvm::ConcaveRegion& r : part->regions()) {
-      if (!opt.only_regions.empty() && !opt.only_regions.count(r.id)) continue;
-      if (opt.max_features >= 0 && n >= opt.max_features) break;
-      ++n;
-      surfaces.push_back({"region " + std::to_string(r.id), r.triangles,
-                          (uint64_t{2} << 32) + r.id});
-    }
-  }
-
-  const double margin = opt.margin_deg * kDeg;
-  for (const Surface& s : surfaces) {
-    ++totals.surfaces;
-    std::printf("  %s |S|=%zu: computing GVM...\n", s.label.c_str(), s.triangles.size());
-    std::fflush(stdout);
-    const auto t0 = std::chrono::steady_clock::now();
-    gvm::SurfaceVisibility vis = gvm::compute_surface_visibility(*part, s.triangles, true, opt.method);
-    const double gvm_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!vis.gvm) {
-      std::printf("  %s: skipped, no GVM (%s) [%.2fs]\n", s.label.c_str(), kind_name(vis.status),
-                  gvm_seconds);
-      ++totals.surfaces_skipped;
-      continue;
-    }
-    gvm::v1::SphericalImage proto;
-    gvm::io::to_proto(*vis.gvm, &proto);
-    const Image im = image_of(proto);
-    std::size_t loop_edges = 0;
-    for (const auto& p : im.polygons) for (const auto& l : p) loop_edges += l.size();
-
-    std::mt19937_64 rng(opt.seed * 0x9E3779B97F4A7C15ull ^ s.stream);
-    // Reference w outside the GVM, at a margin from its boundary: -n_F of a triangle F of S
-    // (self-occluded), else a random self-occluded direction.
-    std::optional<Vec> w;
-    if (!im.full) {
-      std::vector<Vec> normals;
-      for (uint32_t t : s.triangles) {
-        const auto& tri = m.triangles[t];
-        const auto& a = m.points[tri[0]];
-        const auto& b = m.points[tri[1]];
-        const auto& c = m.points[tri[2]];
-        normals.push_back(normalized(
-            cross(Vec{b.x - a.x, b.y - a.y, b.z - a.z}, Vec{c.x - a.x, c.y - a.y, c.z - a.z})));
-      }
-      auto self_occluded = [&](const Vec& v) {
-        for (const Vec& n : normals) if (dot(v, n) < -1e-9) return true;
-        return false;
-      };
-      for (std::size_t i = 0; i < normals.size() && i < 64 && !w; ++i) {
-        Vec c = neg(normals[i]);
-        if (distance_to_boundary(im, c) > margin) w = c;
-      }
-      for (int i = 0; i < 1000 && !w; ++i) {
-        Vec c = random_direction(rng);
-        if (self_occluded(c) && distance_to_boundary(im, c) > margin) w = c;
-      }
-      if (!w) {
-        std::printf("  %s: skipped, no reference direction outside the GVM found\n",
-                    s.label.c_str());
-        ++totals.surfaces_skipped;
-        continue;
-      }
-    }
-    ++totals.surfaces_checked;
-    const std::vector<Vec> points = oracle.sample_points(s.triangles);
-    long tested = 0, skipped = 0, dis = 0, visible_count = 0;
-    auto check = [&](const Vec& u, bool probe) {
-      const double d = distance_to_boundary(im, u);
-      if (!probe && d < margin) {
-        ++skipped;
-        return;
-      }
-      const Vec ue = opt.negate ? neg(u) : u;
-      // Inside a 2-cell, or (only reachable by probes: random directions keep the margin)
-      // on a 1-cell or 0-cell.
-      std::optional<bool> e = im.full ? std::optional<bool>(true) : inside(im, ue, *w, rng);
-      if (e && !*e && distance_to_lower_cells(im, ue) < 1e-9) e = true;
-      const bool o = oracle.surface_visible(s.triangles, points, u);
-      if (!e) {
-        ++totals.undecided;
-        std::printf("    UNDECIDED %s u=(%.17g, %.17g, %.17g): parity paths ambiguous\n",
-                    s.label.c_str(), u[0], u[1], u[2]);
-        return;
-      }
-      ++tested;
-      visible_count += o;
-      if (probe) {
-        std::printf("    PROBE %s u=(%.17g, %.17g, %.17g) engine=%d oracle=%d dist=%.4f deg%s\n",
-                    s.label.c_str(), u[0], u[1], u[2], int(*e), int(o), d / kDeg,
-                    o ? "" : (" [" + witness(oracle, m, s, points, u) + "]").c_str());
-      }
-      if (*e == o) {
-        ++totals.agree;
-        return;
-      }
-      ++dis;
-      std::printf(
-          "    DISAGREE part=%s %s |S|=%zu u=(%.17g, %.17g, %.17g) engine=%s oracle=%s "
-          "dist_to_boundary=%.4f deg seed=%llu%s\n",
-          path.c_str(), s.label.c_str(), s.triangles.size(), u[0], u[1], u[2],
-          *e ? "visible" : "blocked", o ? "visible" : "blocked", d / kDeg,
-          static_cast<unsigned long long>(opt.seed),
-          o ? "" : (" [" + witness(oracle, m, s, points, u) + "]").c_str());
-    };
-    const auto t1 = std::chrono::steady_clock::now();
-    for (const Vec& u : opt.probes) check(u, true);
-    for (int i = 0; i < opt.directions; ++i) check(random_direction(rng), false);
-    // As many again near the corners of the GVM and of the LVM, where the answer changes:
-    // uniform directions alone rarely land in a small GVM.
-    gvm::v1::SphericalImage lvm_proto;
-    gvm::io::to_proto(vis.lvm, &lvm_proto);
-    std::vector<Vec> anchors = corners(im);
-    for (const Vec& v : corners(image_of(lvm_proto))) anchors.push_back(v);
-    for (int i = 0; i < opt.directions && !anchors.empty(); ++i) {
-      const Vec& a = anchors[rng() % anchors.size()];
-      const Vec t = normalized(cross(a, random_direction(rng)));
-      const double theta = std::uniform_real_distribution<double>(0, 10 * kDeg)(rng);
-      check(normalized(add(scale(a, std::cos(theta)), scale(t, std::sin(theta)))), false);
-    }
-    // The GVM's own arcs and points (see the top of the file).
-    std::vector<Vec> cells = im.points;
-    for (const auto& arc : im.arcs) {
-      for (std::size_t i = 0; i + 1 < arc.size(); ++i) cells.push_back(normalized(add(arc[i], arc[i + 1])));
-    }
-    const std::vector<Vec> robust_points = cells.empty() ? std::vector<Vec>{} : robust.sample_points(s.triangles);
-    for (const Vec& u : cells) {
-      ++totals.cells;
-      if (robust.surface_visible(s.triangles, robust_points, u)) continue;
-      ++dis;
-      std::printf("    DISAGREE part=%s %s |S|=%zu u=(%.17g, %.17g, %.17g) engine=visible (an arc or "
-                  "point of the GVM) oracle=blocked robustly [%s]\n",
-                  path.c_str(), s.label.c_str(), s.triangles.size(), u[0], u[1], u[2],
-                  witness(robust, m, s, robust_points, u).c_str());
-    }
-    const double oracle_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    totals.tested += tested;
-    totals.visible += visible_count;
-    totals.skipped_near_boundary += skipped;
-    totals.disagree += dis;
-    std::printf(
-        "  %s |S|=%zu: %s, GVM %s (area %.4f sr, %zu polygons, %zu loop edges, %zu arcs, %zu "
-        "points), %zu sample points; tested %ld (oracle visible %ld), skipped %ld, "
-        "disagreements %ld [GVM %.2fs, oracle %.2fs]\n",
-        s.label.c_str(), s.triangles.size(), kind_name(vis.status),
-        im.full ? "full sphere" : (im.polygons.empty() && im.arcs.empty() && im.points.empty()
-                                       ? "empty"
-                                       : "non-empty"),
-        im.area, im.polygons.size(), loop_edges, im.arcs.size(), im.points.size(), points.size(),
-        tested, visible_count, skipped, dis, gvm_seconds, oracle_seconds);
-    if (opt.verbose) {
-      std::printf("    description: %s\n    triangles:", im.description.c_str());
-      for (uint32_t t : s.triangles) std::printf(" %u", t);
-      std::printf("\n");
-    }
-    std::fflush(stdout);
-  }
+  for (const Surface& s : surfaces_of(*part, opt)) sweep_surface(path, *part, s, opt, oracle, robust, totals);
   return totals;
 }
 

@@ -1,5 +1,5 @@
-// Cancellation inside long computations. A caller (analyze(), the planner) runs its
-// parallel work under a tbb::task_group_context and cancels that context on a stop
+// Cancellation inside long computations. The entry points run their parallel work under
+// a tbb::task_group_context (gvm/cancellable_run.h) and cancel that context on a stop
 // request; nested TBB algorithms inherit the cancellation and stop scheduling, and the
 // long serial loops call interruption_point(), which throws Interrupted once the task
 // group they run in is being cancelled. The entry points catch Interrupted and answer
