@@ -113,7 +113,7 @@ class Analysis {
  public:
   const PartSummary& part() const;
   // The validated solid the maps were computed on, at the file's scale (the engine works on
-  // it scaled by a power of two, see README "Exactness"), input face numbering: to draw it.
+  // it scaled by a power of two, see docs/exactness.md), input face numbering: to draw it.
   const SolidMesh& mesh() const;
   const std::vector<Surface>& regions() const;
   const std::vector<Surface>& features() const;

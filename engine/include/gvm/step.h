@@ -102,7 +102,7 @@ struct StepOptions {
   // more B-rep faces than that (each gives a triangle at least) before meshing, more
   // triangles from BRepMesh before they are welded.
   uint32_t max_triangles = 0;
-  // The faithful tessellation (README, "STEP parts"): the B-rep's directions kept exactly
+  // The faithful tessellation (docs/step.md): the B-rep's directions kept exactly
   // (hole walls parallel to their axes, parallel planes parallel). false: BRepMesh's
   // triangles as they are.
   bool faithful = true;
