@@ -234,8 +234,8 @@ Occlusion envelope_occlusion_in_passes(const SolidMesh& mesh, std::span<const ui
                                        const DirectionWindow& window, std::span<const ClipWindow> clip,
                                        std::vector<ExactVec>& circles, const std::vector<ExactVec>& points,
                                        GlobalOcclusionStatistics* stats) {
-  // Measured on the shared parts (docs/performance-history.md, "A window from a first bound"): below 2,048
-  // occluders the first pass costs more than the second saves on the Prusa parts.
+  // Measured on the shared parts (docs/performance-history.md, "A window from a first
+  // bound"): below 2,048 occluders the first pass costs more than the second saves.
   constexpr size_t kLargeO = 2048, kFirstPass = 64;
   constexpr double kLeftAtMost = 0.5;
   auto one_pass = [&] { return *envelope_occlusion(mesh, s, o, lvm, window, clip, circles, points, stats); };
@@ -515,6 +515,8 @@ sphere::SphericalImage global_visibility_map(const SolidMesh& mesh, std::span<co
       edge_visible[e] = decide(arc, visible_on_seam(arc, open_cells, probe));
     }
   }
+  // open_cells named in the capture: clang 14 (the fuzz preset) cannot capture a structured
+  // binding by [&].
   auto vertex_in = [&, &open_cells = open_cells](uint32_t v) {
     const auto& vert = arr.vertices()[v];
     bool on_lvm = arr.vertex_has_point(v, kLvm);  // a point or on an arc: not in a 2-cell
